@@ -1,0 +1,20 @@
+include(CMakePackageConfigHelpers)
+set(SHADOWPROOF_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/shadowproof)
+
+install(TARGETS shadowproof EXPORT shadowproof-targets
+        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+        LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
+        INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/shadowproof DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+if(TARGET shadowproof_cli)
+  install(TARGETS shadowproof_cli EXPORT shadowproof-targets RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+endif()
+install(EXPORT shadowproof-targets NAMESPACE shadowproof:: DESTINATION ${SHADOWPROOF_CMAKE_DIR})
+
+configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/shadowproof-config.cmake.in
+  ${PROJECT_BINARY_DIR}/shadowproof-config.cmake INSTALL_DESTINATION ${SHADOWPROOF_CMAKE_DIR})
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/shadowproof-config-version.cmake
+  COMPATIBILITY SameMinorVersion)
+install(FILES ${PROJECT_BINARY_DIR}/shadowproof-config.cmake
+              ${PROJECT_BINARY_DIR}/shadowproof-config-version.cmake
+        DESTINATION ${SHADOWPROOF_CMAKE_DIR})
