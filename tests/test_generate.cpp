@@ -93,3 +93,22 @@ TEST_CASE("prng_source draws uniformly below its bound", "[generate]") {
   for (int i = 0; i < 70000; ++i) ++counts[src.below(7)];
   for (int n : counts) CHECK((n > 9000 && n < 11000));
 }
+
+TEST_CASE("requirements of an implementation hold for every generated case", "[generate]") {
+  prng_source src(77);
+  for (int i = 0; i < 3000; ++i) {
+    const generator_requirements req{i % 2 == 0, i % 3 == 0, i % 3 == 1};
+    const auto c = generate_shadow_case<float>(src, req);
+    INFO(c.family);
+    if (req.unit_normal) {
+      int ones = 0, zeros = 0;
+      for (int k = 0; k < 3; ++k) {
+        ones += std::fabs(c.plane[k]) == 1.0f;
+        zeros += c.plane[k] == 0.0f;
+      }
+      CHECK((ones == 1 && zeros == 2));
+    }
+    if (req.directional_only) CHECK(c.light[3] == 0.0f);
+    if (req.point_light_only) CHECK(c.light[3] == 1.0f);
+  }
+}

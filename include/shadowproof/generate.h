@@ -116,20 +116,38 @@ inline constexpr std::array<const char*, 10> exact_families = {
 /// to huge, tiny or subnormal magnitudes, given non-normalised plane equations, lights with
 /// w ≠ 1 (2, −1, 3, 1/2) or signed zeros. Scalings by powers of two and by small integers keep
 /// an exact degeneracy exact.
+/// What an implementation under test accepts; the generator builds every family within it.
+struct generator_requirements {
+  bool unit_normal = false;       ///< the plane's normal is ±1 on one axis
+  bool directional_only = false;  ///< lights have w = 0
+  bool point_light_only = false;  ///< lights have w = 1
+};
+
 template <class F, class Source>
-shadow_case<F> generate_shadow_case(Source& src) {
+shadow_case<F> generate_shadow_case(Source& src, const generator_requirements& req = {}) {
   using namespace detail;
   shadow_case<F> c;
-  const std::string family = exact_families[src.below(exact_families.size())];
+  std::string family = exact_families[src.below(exact_families.size())];
+  // Families that need a point light become their directional counterpart and vice versa.
+  if (req.directional_only && family != "light_parallel" && family != "vertex_on_plane" &&
+      family != "vertex_below_receiver" && family != "axis_aligned")
+    family = "directional_regular";
+  if (req.point_light_only && (family == "light_parallel" || family == "directional_regular")) family = "regular";
   c.family = family;
   auto n = random_normal<F>(src);
-  if (family == "axis_aligned") n = {F(0), F(1), F(0)};
+  if (family == "axis_aligned" || req.unit_normal) {
+    n = {F(0), F(0), F(0)};
+    n[family == "axis_aligned" ? 1 : src.below(3)] = src.below(2) ? F(1) : F(-1);
+  }
   auto light_pos = small_vector<F>(src, 12);
   auto V = small_vector<F>(src, 12);
   F d = F(small_int(src, 12));
   std::array<F, 4> P{n[0], n[1], n[2], d};
-  auto light_point = [&](const std::array<F, 3>& p) { c.light = {p[0], p[1], p[2], F(1)}; };
-  light_point(light_pos);
+  c.light = {light_pos[0], light_pos[1], light_pos[2], F(1)};
+  if (req.directional_only) {
+    const auto dir = nonzero_vector<F>(src, 9);
+    c.light = {dir[0], dir[1], dir[2], F(0)};
+  }
 
   if (family == "light_parallel") {
     const auto dir = orthogonal_to<F>(src, n);
@@ -152,7 +170,8 @@ shadow_case<F> generate_shadow_case(Source& src) {
     const bool beyond = family == "vertex_beyond_light";
     const auto base = beyond ? light_pos : V;
     if (!beyond) P[3] = -dot3(n, base);  // put the base point on the receiver
-    const F side = plane_value(P, light_pos) >= 0 ? F(1) : F(-1);
+    const F light_value = c.light[3] == 0 ? dot3(n, {c.light[0], c.light[1], c.light[2]}) : plane_value(P, light_pos);
+    const F side = light_value >= 0 ? F(1) : F(-1);
     const F k = (beyond ? side : -side) * F(1 + static_cast<long>(src.below(4)));
     V = {base[0] + k * n[0], base[1] + k * n[1], base[2] + k * n[2]};
   }
@@ -164,9 +183,15 @@ shadow_case<F> generate_shadow_case(Source& src) {
     case 0: case 1: case 2:
       break;  // exact as constructed
     case 3: {  // one ulp away in one coordinate
-      F* coords[] = {&c.plane[0], &c.plane[1], &c.plane[2], &c.plane[3], &c.light[0], &c.light[1],
-                     &c.light[2], &c.light[3], &c.point[0], &c.point[1], &c.point[2]};
-      F& x = *coords[src.below(11)];
+      // Coordinates a requirement fixes (a unit normal, the light's w) are not nudged.
+      std::array<F*, 11> coords{};
+      std::size_t count = 0;
+      if (!req.unit_normal) for (int i = 0; i < 3; ++i) coords[count++] = &c.plane[i];
+      coords[count++] = &c.plane[3];
+      for (int i = 0; i < 3; ++i) coords[count++] = &c.light[i];
+      if (!req.directional_only && !req.point_light_only) coords[count++] = &c.light[3];
+      for (int i = 0; i < 3; ++i) coords[count++] = &c.point[i];
+      F& x = *coords[src.below(count)];
       x = std::nextafter(x, src.below(2) ? std::numeric_limits<F>::infinity() : -std::numeric_limits<F>::infinity());
       c.family += "+ulp";
       break;
@@ -190,12 +215,14 @@ shadow_case<F> generate_shadow_case(Source& src) {
       break;
     }
     case 6: {  // a non-normalised plane equation
+      if (req.unit_normal) break;
       const F s = F(src.below(2) ? 3 : -5);
       for (auto& x : c.plane) x *= s;
       c.family += "+plane*" + std::to_string(static_cast<int>(s));
       break;
     }
     case 7: {  // the same light with w ≠ 1
+      if (req.point_light_only || c.light[3] == 0) break;
       const F w[] = {F(2), F(-1), F(3), F(0.5)};
       const F s = w[src.below(4)];
       for (auto& x : c.light) x *= s;
