@@ -1,0 +1,126 @@
+// shadowproof fuzz: differential fuzzing of a registered implementation against the exact
+// oracle, with every failure shrunk to a minimal reproducer.
+#include <unistd.h>
+
+#include <iostream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "command.h"
+#include "shadowproof/differential.h"
+#include "shadowproof/error.h"
+#include "shadowproof/impl_registry.h"
+#include "shadowproof/io.h"
+#include "shadowproof/ulp.h"
+
+namespace shadowproof::cli {
+namespace {
+
+struct fuzz_options {
+  std::string impl;
+  double seconds = 0;
+  std::size_t cases = 0;
+  std::uint64_t seed = 1;
+  std::uint64_t max_ulps = 1u << 20;
+  std::string out_dir;
+  bool json = false;
+  bool no_metamorphic = false;
+};
+
+const implementation& find_impl(const std::string& name) {
+  for (const auto& i : builtin_implementations())
+    if (i.name == name) return i;
+  throw error("fuzz.unknown_impl", "no implementation named '" + name + "' (see 'shadowproof check --list')");
+}
+
+nlohmann::json case_object(const test_case& c) { return nlohmann::json::parse(case_json_line(c)); }
+
+nlohmann::json report_json(const fuzz_report& r) {
+  nlohmann::json doc;
+  doc["impl"] = r.impl;
+  doc["cases"] = r.cases;
+  doc["failing_cases"] = r.failing_cases;
+  doc["metamorphic_max_ulps"] = r.metamorphic_max_ulps;
+  doc["failures"] = nlohmann::json::array();
+  for (const auto& f : r.failures) {
+    nlohmann::json j{{"kind", std::string(to_string(f.kind))},
+                     {"family", f.family},
+                     {"bits", f.bits},
+                     {"original", case_object(f.original)},
+                     {"shrunk", case_object(f.shrunk)},
+                     {"bits_before", f.bits_before},
+                     {"bits_after", f.bits_after}};
+    if (!f.relation.empty()) j["relation"] = f.relation;
+    doc["failures"].push_back(j);
+  }
+  return doc;
+}
+
+void print_text(std::ostream& out, const fuzz_report& r) {
+  out << "fuzz " << r.impl << ": " << r.cases << " cases";
+  for (const auto& [kind, n] : r.failing_cases) out << ", " << n << " " << kind;
+  out << "\n";
+  for (const auto& [relation, ulps] : r.metamorphic_max_ulps)
+    out << "  metamorphic " << relation << ": up to "
+        << (ulps == UINT64_MAX ? std::string("non-finite vs finite") : std::to_string(ulps) + " ulps") << "\n";
+  for (const auto& f : r.failures) {
+    out << "\n" << to_string(f.kind) << (f.relation.empty() ? "" : " (" + f.relation + ")") << " on " << f.family
+        << ", " << f.bits << " bits of error; shrunk from " << f.bits_before << " to " << f.bits_after << " bits\n";
+    out << "  original: " << case_json_line(f.original) << "\n";
+    out << "  shrunk:   " << case_json_line(f.shrunk) << "\n";
+  }
+}
+
+int run_fuzz_command(const fuzz_options& o) {
+  const implementation& impl = find_impl(o.impl);
+  fuzz_settings s;
+  if (o.seconds > 0) s.seconds = o.seconds;
+  if (o.cases > 0) s.cases = o.cases;
+  if (!s.seconds && !s.cases) throw error("fuzz.no_budget", "give --seconds S or --cases N");
+  s.seed = o.seed;
+  s.ulps_threshold = o.max_ulps;
+  s.metamorphic = !o.no_metamorphic;
+  const bool terminal = isatty(STDERR_FILENO) == 1;
+  const fuzz_report r = run_fuzz(impl, s, [&](std::size_t cases, std::size_t failures) {
+    std::cerr << (terminal ? "\r" : "") << "fuzz " << impl.name << ": " << cases << " cases, " << failures
+              << " failures" << (terminal ? "\x1b[K" : "\n") << std::flush;
+  });
+  if (terminal) std::cerr << "\n";
+
+  if (!o.out_dir.empty()) {
+    const std::filesystem::path dir = o.out_dir;
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec) throw error("io.cannot_write", "cannot create the directory " + dir.string() + ": " + ec.message());
+    for (std::size_t k = 0; k < r.failures.size(); ++k) {
+      const auto& f = r.failures[k];
+      const std::string stem = impl.name + "-" + std::to_string(k) + "-" + std::string(to_string(f.kind));
+      write_file_atomically(dir / (stem + ".jsonl"), case_json_line(f.shrunk) + "\n");
+      write_file_atomically(dir / (stem + ".cpp"), catch2_regression_test(impl, f));
+    }
+    write_file_atomically(dir / "report.json", report_json(r).dump(2) + "\n");
+  }
+  if (o.json) std::cout << report_json(r).dump(2) << "\n";
+  else print_text(std::cout, r);
+  return r.failures.empty() ? 0 : 1;
+}
+
+const command_registration registration{command{
+    "fuzz", "differential fuzzing of an implementation against the exact oracle, failures shrunk",
+    [](CLI::App& app, const global_options&) -> std::function<int()> {
+      auto o = std::make_shared<fuzz_options>();
+      app.add_option("--impl", o->impl, "implementation name (shadowproof check --list)")->required();
+      auto seconds = app.add_option("--seconds", o->seconds, "run for this many seconds");
+      auto cases = app.add_option("--cases", o->cases, "run this many cases (output is then byte-identical per seed)");
+      seconds->excludes(cases);
+      app.add_option("--seed", o->seed, "seed of the case generator")->capture_default_str();
+      app.add_option("--max-ulps", o->max_ulps, "an output at least this many ulps off fails")->capture_default_str();
+      app.add_option("--out", o->out_dir, "write each shrunk case (.jsonl) and Catch2 test (.cpp) here");
+      app.add_flag("--json", o->json, "print the report as JSON");
+      app.add_flag("--no-metamorphic", o->no_metamorphic, "skip the metamorphic relations");
+      return [o] { return run_fuzz_command(*o); };
+    }}};
+
+}  // namespace
+}  // namespace shadowproof::cli
