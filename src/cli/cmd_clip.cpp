@@ -1,0 +1,124 @@
+// shadowproof clip: the exact shadow region of a scene file.
+#include <fstream>
+#include <iostream>
+#include <memory>
+
+#include <nlohmann/json.hpp>
+
+#include "command.h"
+#include "shadowproof/clip.h"
+#include "shadowproof/error.h"
+#include "shadowproof/svg.h"
+
+namespace shadowproof::cli {
+
+namespace {
+
+nlohmann::json exact2(const point2& p) { return {to_string(p[0]), to_string(p[1])}; }
+nlohmann::json exact3(const point3& p) { return {to_string(p[0]), to_string(p[1]), to_string(p[2])}; }
+
+template <class P, class F>
+nlohmann::json ring_json(const std::vector<P>& ring, F f) {
+  nlohmann::json a = nlohmann::json::array();
+  for (const auto& p : ring) a.push_back(f(p));
+  return a;
+}
+
+nlohmann::json region_json(const shadow_region& r) {
+  nlohmann::json j;
+  j["polygons"] = nlohmann::json::array();
+  for (const auto& p : r.polygons) {
+    nlohmann::json q;
+    q["outer"] = ring_json(p.outer_3d, exact3);
+    q["holes"] = nlohmann::json::array();
+    for (const auto& h : p.holes_3d) q["holes"].push_back(ring_json(h, exact3));
+    q["outer_chart"] = ring_json(p.outer, exact2);
+    q["holes_chart"] = nlohmann::json::array();
+    for (const auto& h : p.holes) q["holes_chart"].push_back(ring_json(h, exact2));
+    j["polygons"].push_back(q);
+  }
+  j["area_squared"] = to_string(r.area_squared);
+  j["chart"] = {{"dropped_axis", std::string(r.chart.axis_name(2))},
+                {"axes", {std::string(r.chart.axis_name(0)), std::string(r.chart.axis_name(1))}},
+                {"area", to_string(r.chart_area)},
+                {"area_scale_squared", to_string(r.chart.area_scale_squared)},
+                {"receiver_plane", {to_string(r.chart.receiver_plane.a()), to_string(r.chart.receiver_plane.b()),
+                                    to_string(r.chart.receiver_plane.c()), to_string(r.chart.receiver_plane.d())}}};
+  nlohmann::json segs = nlohmann::json::array(), pts = nlohmann::json::array();
+  nlohmann::json segs2 = nlohmann::json::array(), pts2 = nlohmann::json::array();
+  for (const auto& d : r.degenerate) {
+    if (d.is_point()) {
+      pts.push_back(exact3(d.a_3d));
+      pts2.push_back(exact2(d.a));
+    } else {
+      segs.push_back({exact3(d.a_3d), exact3(d.b_3d)});
+      segs2.push_back({exact2(d.a), exact2(d.b)});
+    }
+  }
+  j["degenerate"] = {{"segments", segs}, {"points", pts}, {"segments_chart", segs2}, {"points_chart", pts2}};
+  j["cases"] = nlohmann::json::array();
+  for (auto c : r.cases) j["cases"].push_back(std::string(to_string(c)));
+  return j;
+}
+
+nlohmann::json comparison_json(const float_comparison& c) {
+  return {{"float_polygons", c.float_polygons},
+          {"invalid_polygons", c.invalid_polygons},
+          {"non_finite_vertices", c.non_finite_vertices},
+          {"vertices_outside_receiver", c.vertices_outside_receiver},
+          {"receiver_convex", c.receiver_convex},
+          {"float_area", to_string(c.float_area)},
+          {"exact_area", to_string(c.exact_area)},
+          {"false_shadow_area", to_string(c.false_shadow_area)},
+          {"missing_shadow_area", to_string(c.missing_shadow_area)},
+          {"missing_pieces", c.missing_pieces},
+          {"outside_receiver_area", to_string(c.outside_receiver_area)}};
+}
+
+struct clip_args {
+  std::string scene_file;
+  std::string svg_file;
+  bool json = false;
+  bool compare_float = false;
+};
+
+}  // namespace
+
+static const command_registration clip_registration{command{
+    "clip",
+    "exact shadow region of casters (polygons, meshes, OFF/OBJ files) on a finite receiver polygon",
+    [](CLI::App& app, const global_options& globals) -> std::function<int()> {
+      auto args = std::make_shared<clip_args>();
+      app.add_option("scene", args->scene_file, "scene JSON file (see docs: receiver, light, casters)")->required();
+      app.add_flag("--json", args->json, "print the region as JSON with exact rational strings");
+      app.add_option("--svg", args->svg_file, "write a picture of the region in the receiver's chart");
+      app.add_flag("--compare-float", args->compare_float,
+                   "also run the float pipeline (float shadow matrix + Sutherland-Hodgman) and report its errors");
+      return [args, &globals]() -> int {
+        scene_limits limits;
+        limits.numbers = globals.limits;
+        const scene s = read_scene_file(args->scene_file, limits);
+        clip_options options;
+        options.limits = limits;
+        options.keep_projected = !args->svg_file.empty();
+        const shadow_region r = compute_shadow_region(s, options);
+        if (!args->svg_file.empty()) {
+          std::ofstream svg(args->svg_file);
+          if (!svg) throw error("io.unwritable", "cannot write the SVG file '" + args->svg_file + "'");
+          write_svg(svg, r, "shadow of " + args->scene_file);
+        }
+        std::unique_ptr<float_comparison> cmp;
+        if (args->compare_float) cmp = std::make_unique<float_comparison>(compare_with_float(s, r));
+        if (args->json) {
+          nlohmann::json j = region_json(r);
+          if (cmp) j["float_comparison"] = comparison_json(*cmp);
+          std::cout << j.dump(2) << '\n';
+        } else {
+          print_region_report(std::cout, r);
+          if (cmp) print_float_comparison(std::cout, *cmp);
+        }
+        return 0;
+      };
+    }}};
+
+}  // namespace shadowproof::cli

@@ -1,0 +1,46 @@
+#pragma once
+// Tables, JSON and reproducers shared by `shadowproof check` and `shadowproof grade`.
+#include <nlohmann/json.hpp>
+
+#include <functional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "shadowproof/verify.h"
+
+namespace shadowproof::cli {
+
+/// One row of a report: an implementation (or a graded file) on one operation and class.
+struct report_row {
+  std::string impl;
+  operation op;
+  scalar_type type;
+  std::string cls;  ///< input class name, or "all"
+  grade_summary summary;
+};
+
+/// Finds the case a grade refers to (by id).
+using case_lookup = std::function<const test_case&(std::uint64_t id)>;
+
+/// Fixed-width table: impl, op, class, cases, max ulps, median, max bits, histogram, counts.
+void print_table(std::ostream& out, const std::vector<report_row>& rows);
+
+/// The worst case of a grade as a bit-exact reproducer: inputs as hex floats, the output that
+/// is furthest off (got vs correctly rounded exact), and the shadowproof command that prints
+/// the exact answer.
+void print_worst(std::ostream& out, const std::string& title, const case_grade& g, const test_case& c,
+                 depth_convention depth = depth_convention::gl);
+
+/// The shadowproof command printing the exact answer for the case's inputs.
+std::string reproducer_command(const test_case& c, depth_convention depth = depth_convention::gl);
+
+/// JSON of a summary: cases, max_ulps, median_ulps, max_bits, bits_histogram, nonfinite,
+/// garbage, misclassified, worst (id, class, output, got, expected, ulps, bits, inputs, ...).
+nlohmann::json summary_json(const grade_summary& s, const case_lookup& lookup,
+                            depth_convention depth = depth_convention::gl);
+
+/// One worst case as JSON.
+nlohmann::json worst_json(const case_grade& g, const test_case& c, depth_convention depth = depth_convention::gl);
+
+}  // namespace shadowproof::cli

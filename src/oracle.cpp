@@ -1,0 +1,377 @@
+// The grading oracle: the exact answer for the very same float inputs, decided with interval
+// arithmetic when it can be and with exact rationals otherwise. The whole grade is written
+// once, generic over the number type N (rational or interval), so the filtered and the naive
+// oracle cannot disagree except through an undecided interval, which falls back.
+#include <array>
+#include <cmath>
+#include <limits>
+
+#include "oracle_interval.h"
+#include "shadowproof/classify.h"
+#include "shadowproof/error.h"
+#include "shadowproof/normal_matrix.h"
+#include "shadowproof/number.h"
+#include "shadowproof/project.h"
+#include "shadowproof/reflect.h"
+#include "shadowproof/shadow.h"
+#include "shadowproof/ulp.h"
+#include "shadowproof/verify.h"
+
+namespace shadowproof {
+namespace {
+
+// Intervals over double decide float outputs (and f32 products are exact in double); double
+// outputs need the 64-bit significand of long double.
+using ival32 = detail::interval<double>;
+using ival64 = detail::interval<long double>;
+
+template <class T>
+struct is_interval : std::false_type {};
+template <class B>
+struct is_interval<detail::interval<B>> : std::true_type {};
+
+// --- the number-type specific pieces -------------------------------------------------------
+
+template <class N>
+N from_double(double x) {
+  if constexpr (std::is_same_v<N, rational>) return exact_value(x);
+  else return N::point(x);
+}
+
+template <class F>
+F round_exact(const rational& q) {
+  F r;
+  if constexpr (std::is_same_v<F, float>) r = to_nearest_float(q);
+  else r = to_nearest_double(q);
+  return r == 0 ? F(0) : r;
+}
+template <class F, class B>
+F round_exact(const detail::interval<B>& x) { return detail::round_to<F>(x); }
+
+int sign_n(const rational& q) { return sgn(q); }
+template <class B>
+int sign_n(const detail::interval<B>& x) { return detail::sign(x); }
+
+template <class N>
+N abs_n(const N& x) { return sign_n(x) < 0 ? N(-x) : x; }
+
+// --- canonical exact outputs -----------------------------------------------------------------
+
+// Fixed-size storage: the oracle's inner loop allocates nothing but the grade itself.
+template <class N>
+struct small_vector {
+  std::array<N, 16> v{};
+  std::size_t n = 0;
+  void push_back(const N& x) { v[n++] = x; }
+  void assign(std::size_t count, const N& x) {
+    n = count;
+    for (std::size_t i = 0; i < count; ++i) v[i] = x;
+  }
+  bool empty() const { return n == 0; }
+  N& operator[](std::size_t i) { return v[i]; }
+  const N& operator[](std::size_t i) const { return v[i]; }
+};
+
+template <class N>
+struct exact_outputs {
+  small_vector<N> values;
+  bool defined = true;                  // false: no output exists (undefined image, singular A)
+  small_vector<bool> entry_undefined;   // when defined: entries that divide by zero (flat volumes)
+  std::optional<point_class> cls;
+};
+
+template <class N>
+vec4<N> vec_from(const double* x, std::size_t n, const N& last) {
+  vec4<N> v;
+  for (std::size_t i = 0; i < n; ++i) v[i] = from_double<N>(x[i]);
+  if (n == 3) v[3] = last;
+  return v;
+}
+
+template <class N>
+light<N> canonical_light(const double* x, const conventions& conv) {
+  light<N> L{vec_from<N>(x, 4, N(0))};
+  // A directional light given along its rays is the negation of the canonical one (exact).
+  if (conv.light == light_sign::along_rays && x[3] == 0)
+    for (std::size_t i = 0; i < 3; ++i) L.l[i] = -L.l[i];
+  return L;
+}
+
+template <class N>
+exact_outputs<N> canonical(const test_case& c, const conventions& conv) {
+  exact_outputs<N> r;
+  const double* in = c.inputs.data();
+  const plane<N> P{vec_from<N>(in, 4, N(0))};
+  switch (c.op) {
+    case operation::shadow_matrix: {
+      const mat4<N> M = shadow_matrix(P, canonical_light<N>(in + 4, conv));
+      for (std::size_t i = 0; i < 16; ++i) r.values.push_back(M(i / 4, i % 4));
+      break;
+    }
+    case operation::shadow_point: {
+      const light<N> L = canonical_light<N>(in + 4, conv);
+      const vec4<N> V = vec_from<N>(in + 8, 3, N(1));
+      r.cls = classify_point(P, L, V);
+      if (conv.clamps_behind_receiver && *r.cls == point_class::behind_receiver) {
+        for (std::size_t i = 0; i < 3; ++i) r.values.push_back(V[i]);
+        break;
+      }
+      const vec4<N> h = shadow_image(P, L, V);
+      if (sign_n(h[3]) == 0) {
+        r.defined = false;
+        r.values.assign(3, N(0));
+      } else {
+        for (std::size_t i = 0; i < 3; ++i) r.values.push_back(h[i] / h[3]);
+      }
+      break;
+    }
+    case operation::reflection_matrix: {
+      const mat4<N> M = reflection_matrix(P);
+      for (std::size_t i = 0; i < 16; ++i) r.values.push_back(M(i / 4, i % 4));
+      break;
+    }
+    case operation::ortho:
+    case operation::frustum: {
+      std::array<N, 6> x;
+      for (std::size_t i = 0; i < 6; ++i) x[i] = from_double<N>(in[i]);
+      auto build = [&](const std::array<N, 6>& v) {
+        return c.op == operation::ortho ? orthographic(v[0], v[1], v[2], v[3], v[4], v[5], conv.depth)
+                                        : frustum(v[0], v[1], v[2], v[3], v[4], v[5], conv.depth, false);
+      };
+      if (c.op == operation::frustum && sign_n(x[4]) <= 0) {  // near ≤ 0: no such projection
+        r.defined = false;
+        r.values.assign(16, N(0));
+        break;
+      }
+      // A flat volume (l = r, b = t or n = f) divides by zero only in the entries that scale
+      // or centre that axis: row k's diagonal and its offset column (3 for ortho and for the
+      // depth row, 2 for the x and y rows of a frustum). The other entries still exist.
+      // A builder declared symmetric (l = −r, b = −t) has a zero centre offset by construction,
+      // so for it a flat x or y extent leaves that offset defined as 0.
+      std::array<N, 6> v = x;
+      r.entry_undefined.assign(16, false);
+      small_vector<std::size_t> zero_offsets;
+      for (std::size_t k = 0; k < 3; ++k)
+        if (sign_n(N(x[2 * k + 1] - x[2 * k])) == 0) {
+          v[2 * k + 1] = x[2 * k] + N(1);
+          const std::size_t offset = (c.op == operation::frustum && k < 2) ? 2 : 3;
+          r.entry_undefined[k * 4 + k] = true;
+          if (conv.symmetric_view && k < 2) zero_offsets.push_back(k * 4 + offset);
+          else r.entry_undefined[k * 4 + offset] = true;
+        }
+      const mat4<N> M = build(v);
+      for (std::size_t i = 0; i < 16; ++i) r.values.push_back(M(i / 4, i % 4));
+      for (std::size_t i = 0; i < zero_offsets.n; ++i) r.values[zero_offsets[i]] = N(0);
+      break;
+    }
+    case operation::normal_matrix: {
+      mat4<N> A = identity4<N>();
+      for (std::size_t i = 0; i < 9; ++i) A(i / 3, i % 3) = from_double<N>(in[i]);
+      try {
+        const mat4<N> G = normal_matrix3(A);
+        for (std::size_t i = 0; i < 9; ++i) r.values.push_back(G(i / 3, i % 3));
+      } catch (const error&) {  // det A = 0: no inverse, no normal matrix
+        r.defined = false;
+        r.values.assign(9, N(0));
+      }
+      break;
+    }
+  }
+  return r;
+}
+
+// Canonical row-major index of the implementation's output j of a k x k matrix under its
+// storage conventions.
+std::size_t canonical_index(std::size_t j, std::size_t k, const conventions& conv) {
+  std::size_t r = j / k, col = j % k;
+  if (conv.storage == storage_order::column_major) std::swap(r, col);
+  if (conv.vectors == vector_side::row) std::swap(r, col);  // v M = (Mᵀ v)ᵀ
+  return r * k + col;
+}
+
+// Where the float image G lies on the line through the light and V (see image_class).
+template <class N>
+image_class classify_image(const test_case& c, const conventions& conv, const double* got) {
+  for (std::size_t i = 0; i < 3; ++i)
+    if (!std::isfinite(got[i])) return image_class::nonfinite;
+  const double* in = c.inputs.data();
+  const light<N> L = canonical_light<N>(in + 4, conv);
+  const vec4<N> V = vec_from<N>(in + 8, 3, N(1));
+  const vec4<N> G = vec_from<N>(got, 3, N(1));
+  const bool same = got[0] == in[8] && got[1] == in[9] && got[2] == in[10];
+  if (L.is_directional()) {
+    // Travelling from V towards the light means moving away from a real shadow.
+    const N k = (V[0] - G[0]) * L.l[0] + (V[1] - G[1]) * L.l[1] + (V[2] - G[2]) * L.l[2];
+    const int s = sign_n(k);
+    if (s > 0) return image_class::shadow;
+    if (s < 0) return image_class::behind_receiver;
+    return same ? image_class::on_receiver : image_class::other;
+  }
+  // Point light Lc = L/w; G's position on the line is u = (G − Lc)·(V − Lc) / |V − Lc|²,
+  // compared with 1 after multiplying by w² (division-free): a = u b with b > 0.
+  const N& w = L.l[3];
+  N a(0), b(0);
+  for (std::size_t i = 0; i < 3; ++i) {
+    const N dv = w * V[i] - L.l[i];
+    a += (w * G[i] - L.l[i]) * dv;
+    b += dv * dv;
+  }
+  if (sign_n(b) == 0) return image_class::other;  // V is the light
+  if (sign_n(a) < 0) return image_class::beyond_light;
+  if (sign_n(a) == 0) return image_class::other;
+  const int beyond_v = sign_n(N(a - b));
+  if (beyond_v > 0) return image_class::shadow;
+  if (beyond_v < 0) return image_class::behind_receiver;
+  return same ? image_class::on_receiver : image_class::other;
+}
+
+// The image class a correct result must have, for the exact classes where the side matters.
+// A point exactly on the receiver is left to the ulps metric: its image is the point itself,
+// and an image one ulp away from it would otherwise count as a flipped side.
+std::optional<image_class> comparable(point_class e, const conventions& conv) {
+  switch (e) {
+    case point_class::shadow: return image_class::shadow;
+    case point_class::behind_receiver:
+      return conv.clamps_behind_receiver ? image_class::on_receiver : image_class::behind_receiver;
+    case point_class::beyond_light: return image_class::beyond_light;
+    default: return std::nullopt;
+  }
+}
+
+// P·(G, 1) for the float image G, correctly rounded to double. The value cancels to a few
+// ulps of its terms (G is nearly on P), which double intervals rarely decide for double
+// inputs; then only this small dot product is redone exactly, not the whole case.
+template <class N>
+double plane_value(const double* in, const double* got) {
+  auto exact = [&](auto tag) {
+    using M = decltype(tag);
+    const plane<M> P{vec_from<M>(in, 4, M(0))};
+    return round_exact<double>(evaluate(P, vec_from<M>(got, 3, M(1))));
+  };
+  if constexpr (std::is_same_v<N, rational>) {
+    return exact(rational());
+  } else {
+    try {
+      return exact(ival64());  // f32 products are exact in its 64-bit significand
+    } catch (const detail::undecided&) {
+      return exact(rational());
+    }
+  }
+}
+
+template <class F>
+void grade_output(output_grade& g, double got_d, bool defined, F ref) {
+  g.got = got_d;
+  g.exact_defined = defined;
+  if (!defined) {
+    g.garbage = std::isfinite(got_d);
+    return;
+  }
+  g.reference = static_cast<double>(ref);
+  const F got = static_cast<F>(got_d);
+  if (!std::isfinite(got)) {
+    // An overflow to the same infinity is the correctly rounded answer.
+    g.nonfinite = !(std::isinf(ref) && got == ref);
+    return;
+  }
+  F target = ref;
+  std::uint64_t extra = 0;
+  if (std::isinf(ref)) {  // exact value overflows the type; count one step past the largest
+    target = std::copysign(std::numeric_limits<F>::max(), ref);
+    extra = 1;
+  }
+  g.ulps = ulp_distance<F>(got, target) + extra;
+  g.bits = g.ulps ? bits_of_error(g.ulps) : 0.0;
+  if (g.ulps == 0) g.relative = 0;
+  else if (ref == 0) g.relative = std::numeric_limits<double>::infinity();
+  else g.relative = std::fabs((static_cast<double>(got) - g.reference) / g.reference);
+}
+
+template <class N, class F>
+case_grade grade_with(const test_case& c, const conventions& conv, const double* got) {
+  case_grade g;
+  g.id = c.id;
+  g.cls = c.cls;
+  const exact_outputs<N> e = canonical<N>(c, conv);
+  const auto& sig = signature(c.op);
+  const std::size_t n = sig.output_count;
+  g.outputs.resize(n);
+
+  // Reference per output, in the implementation's layout (and scale, when homogeneous).
+  std::array<N, 16> ref;
+  std::array<bool, 16> defined;
+  defined.fill(e.defined);
+  for (std::size_t j = 0; j < n; ++j) {
+    const std::size_t i = sig.matrix_size ? canonical_index(j, sig.matrix_size, conv) : j;
+    ref[j] = e.values[i];
+    if (!e.entry_undefined.empty() && e.entry_undefined[i]) defined[j] = false;
+  }
+  const bool up_to_scale =
+      sig.matrix_size && (conv.homogeneous || (conv.normalises_plane && c.op == operation::shadow_matrix));
+  if (up_to_scale && e.defined) {
+    // Pivot: the defined entry of largest exact magnitude, the first one on ties.
+    std::size_t k = 0;
+    while (k + 1 < n && !defined[k]) ++k;
+    N best = abs_n(ref[k]);
+    for (std::size_t j = k + 1; j < n; ++j) {
+      if (!defined[j]) continue;
+      N a = abs_n(ref[j]);
+      if (sign_n(N(a - best)) > 0) { best = a; k = j; }
+    }
+    g.scale_pivot = k;
+    // λ = got[k] / exact[k]; without a usable got[k] the scale stays 1 and the grade shows it.
+    if (std::isfinite(got[k]) && got[k] != 0 && sign_n(ref[k]) != 0) {
+      const N lambda = from_double<N>(got[k]) / ref[k];
+      for (std::size_t j = 0; j < n; ++j) ref[j] = lambda * ref[j];
+    }
+  }
+
+  std::optional<std::size_t> first_bad;
+  for (std::size_t j = 0; j < n; ++j) {
+    auto& o = g.outputs[j];
+    if (defined[j]) grade_output<F>(o, got[j], true, round_exact<F>(ref[j]));
+    else grade_output<F>(o, got[j], false, F(0));
+    if (o.nonfinite) ++g.nonfinite;
+    if (o.garbage) ++g.garbage;
+    if ((o.nonfinite || o.garbage) && !first_bad) first_bad = j;
+    if (o.counted() && o.ulps > g.max_ulps) {
+      g.max_ulps = o.ulps;
+      g.worst_output = j;
+    }
+  }
+  // A non-finite or garbage output is worse than any finite error.
+  if (first_bad) g.worst_output = *first_bad;
+  g.max_bits = bits_of_error(g.max_ulps);
+
+  if (c.op == operation::shadow_point) {
+    g.exact_class = e.cls;
+    const image_class got_class = classify_image<N>(c, conv, got);
+    g.got_class = got_class;
+    if (const auto want = comparable(*e.cls, conv)) g.misclassified = got_class != *want;
+    else if (e.defined) g.misclassified = got_class == image_class::nonfinite;
+    if (got_class != image_class::nonfinite) g.plane_value = plane_value<N>(c.inputs.data(), got);
+  }
+  return g;
+}
+
+
+
+}  // namespace
+
+case_grade grade_case(const test_case& c, const conventions& conv, const double* outputs,
+                      oracle_mode mode, oracle_counters* counters) {
+  if (mode == oracle_mode::filtered) {
+    try {
+      case_grade g = c.type == scalar_type::f32 ? grade_with<ival32, float>(c, conv, outputs)
+                                                : grade_with<ival64, double>(c, conv, outputs);
+      if (counters) ++counters->decided_by_intervals;
+      return g;
+    } catch (const detail::undecided&) {
+      if (counters) ++counters->fell_back_to_rationals;
+    }
+  }
+  return c.type == scalar_type::f32 ? grade_with<rational, float>(c, conv, outputs)
+                                    : grade_with<rational, double>(c, conv, outputs);
+}
+
+}  // namespace shadowproof

@@ -1,0 +1,352 @@
+// The grader: metrics on hand-made cases (expected values derived by hand), convention mapping,
+// the case protocol, and the filtered oracle agreeing exactly with the all-rational one.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <random>
+
+#include "shadowproof/error.h"
+#include "shadowproof/normal_matrix.h"
+#include "shadowproof/project.h"
+#include "shadowproof/reflect.h"
+#include "shadowproof/shadow.h"
+#include "shadowproof/verify.h"
+
+using namespace shadowproof;
+
+namespace {
+
+test_case make_case(operation op, scalar_type type, std::vector<double> inputs) {
+  test_case c;
+  c.op = op;
+  c.type = type;
+  c.inputs = std::move(inputs);
+  return c;
+}
+
+// Receiver y = 1, i.e. P = (0, 1, 0, −1); directional light L = (1, 2, 3, 0), P·L = 2.
+// By hand, M = 2 I − L Pᵀ with L Pᵀ = [0 1 0 −1; 0 2 0 −2; 0 3 0 −3; 0 0 0 0]:
+const std::vector<double> ground_inputs{0, 1, 0, -1, 1, 2, 3, 0};
+const std::vector<double> ground_matrix{2, -1, 0, 1,  //
+                                        0, 0, 0, 2,   //
+                                        0, -3, 2, 3,  //
+                                        0, 0, 0, 2};
+
+std::vector<double> transposed(const std::vector<double>& m) {
+  std::vector<double> t(16);
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c) t[c * 4 + r] = m[r * 4 + c];
+  return t;
+}
+
+}  // namespace
+
+TEST_CASE("an output off by exactly one ulp grades as 1 ulp and 1 bit", "[verify]") {
+  const test_case c = make_case(operation::shadow_matrix, scalar_type::f32, ground_inputs);
+  std::vector<double> out = ground_matrix;
+  out[0] = static_cast<double>(std::nextafter(2.0f, 3.0f));  // 2 + 2^-22
+  const case_grade g = grade_case(c, conventions{}, out.data());
+  CHECK(g.max_ulps == 1);
+  CHECK(g.max_bits == 1.0);
+  CHECK(g.worst_output == 0);
+  CHECK(g.outputs[0].reference == 2.0);
+  CHECK(g.outputs[0].relative == std::ldexp(1.0, -23));
+  for (std::size_t i = 1; i < 16; ++i) CHECK(g.outputs[i].ulps == 0);
+  CHECK(g.nonfinite == 0);
+}
+
+TEST_CASE("the exact matrix itself grades as correctly rounded", "[verify]") {
+  const test_case c = make_case(operation::shadow_matrix, scalar_type::f64, ground_inputs);
+  const case_grade g = grade_case(c, conventions{}, ground_matrix.data());
+  CHECK(g.max_ulps == 0);
+  CHECK(g.max_bits == 0.0);
+}
+
+TEST_CASE("a NaN where the exact value is finite counts as non-finite, not as ulps", "[verify]") {
+  const test_case c = make_case(operation::shadow_matrix, scalar_type::f32, ground_inputs);
+  std::vector<double> out = ground_matrix;
+  out[7] = std::numeric_limits<double>::quiet_NaN();
+  out[11] = std::numeric_limits<double>::infinity();
+  const case_grade g = grade_case(c, conventions{}, out.data());
+  CHECK(g.nonfinite == 2);
+  CHECK(g.outputs[7].nonfinite);
+  CHECK_FALSE(g.outputs[7].counted());
+  CHECK(g.max_ulps == 0);
+  CHECK(g.worst_output == 7);
+}
+
+TEST_CASE("transposed storage is a convention: exact when declared, wrong when not", "[verify]") {
+  const test_case c = make_case(operation::shadow_matrix, scalar_type::f32, ground_inputs);
+  const std::vector<double> out = transposed(ground_matrix);
+  conventions column_major;
+  column_major.storage = storage_order::column_major;
+  CHECK(grade_case(c, column_major, out.data()).max_ulps == 0);
+  // Row vectors stored row-major are the same memory as column vectors stored column-major.
+  conventions row_vectors;
+  row_vectors.vectors = vector_side::row;
+  CHECK(grade_case(c, row_vectors, out.data()).max_ulps == 0);
+  // Undeclared, the transposition is a real error: entry (0,1) is 0 where −1 is exact.
+  const case_grade wrong = grade_case(c, conventions{}, out.data());
+  CHECK(wrong.max_ulps > 0);
+  CHECK(wrong.outputs[1].reference == -1.0);
+  CHECK(wrong.outputs[1].got == 0.0);
+}
+
+TEST_CASE("a light given along its rays is a convention: −M grades as exact when declared", "[verify]") {
+  const test_case c = make_case(operation::shadow_matrix, scalar_type::f64, ground_inputs);
+  std::vector<double> out = ground_matrix;
+  for (double& x : out) x = -x;  // M(P, −L) = −(P·L) I + L Pᵀ = −M
+  conventions along;
+  along.light = light_sign::along_rays;
+  CHECK(grade_case(c, along, out.data()).max_ulps == 0);
+  CHECK(grade_case(c, conventions{}, out.data()).max_ulps > 0);
+}
+
+TEST_CASE("a homogeneous result is graded up to its scale, fixed by the largest exact entry", "[verify]") {
+  const test_case c = make_case(operation::shadow_matrix, scalar_type::f32, ground_inputs);
+  std::vector<double> out = ground_matrix;
+  for (double& x : out) x *= -0.75;  // exact in float
+  conventions homogeneous;
+  homogeneous.homogeneous = true;
+  const case_grade g = grade_case(c, homogeneous, out.data());
+  CHECK(g.max_ulps == 0);
+  // |−3| at (2,1) is the largest exact entry (row-major index 9).
+  REQUIRE(g.scale_pivot);
+  CHECK(*g.scale_pivot == 9);
+  CHECK(grade_case(c, conventions{}, out.data()).max_ulps > 0);
+  // A scale does not hide a real error in another entry.
+  out[3] = std::nextafter(static_cast<float>(out[3]), 10.0f);
+  CHECK(grade_case(c, homogeneous, out.data()).max_ulps == 1);
+}
+
+TEST_CASE("an image on the wrong side of the receiver is a flipped class", "[verify]") {
+  // Receiver y = 0, light towards +y, V = (1, 2, 3): s = P·L = 1, t = P·V = 2, a real shadow
+  // at s V − t L = (1, 0, 3).
+  const test_case c = make_case(operation::shadow_point, scalar_type::f32, {0, 1, 0, 0, 0, 1, 0, 0, 1, 2, 3});
+  const std::vector<double> right{1, 0, 3};
+  const case_grade good = grade_case(c, conventions{}, right.data());
+  REQUIRE(good.exact_class);
+  CHECK(*good.exact_class == point_class::shadow);
+  CHECK(*good.got_class == image_class::shadow);
+  CHECK_FALSE(good.misclassified);
+  CHECK(good.max_ulps == 0);
+  CHECK(*good.plane_value == 0.0);
+  // (1, 4, 3) lies beyond V, away from the light: the image of a point behind the receiver.
+  const std::vector<double> flipped{1, 4, 3};
+  const case_grade bad = grade_case(c, conventions{}, flipped.data());
+  CHECK(bad.misclassified);
+  CHECK(*bad.got_class == image_class::behind_receiver);
+  CHECK(*bad.plane_value == 4.0);
+}
+
+TEST_CASE("a finite image where none exists is garbage; infinity there is fine", "[verify]") {
+  // Light parallel to the receiver y = 0 and V off it: s = 0, t = 1, no image.
+  const test_case c = make_case(operation::shadow_point, scalar_type::f64, {0, 1, 0, 0, 1, 0, 0, 0, 0, 1, 0});
+  const std::vector<double> finite{1e30, 0, 0};
+  const case_grade g = grade_case(c, conventions{}, finite.data());
+  CHECK(*g.exact_class == point_class::light_parallel);
+  CHECK(g.garbage == 3);
+  CHECK_FALSE(g.misclassified);
+  const double inf = std::numeric_limits<double>::infinity();
+  const std::vector<double> infinite{inf, -inf, std::nan("")};
+  const case_grade h = grade_case(c, conventions{}, infinite.data());
+  CHECK(h.garbage == 0);
+  CHECK(h.nonfinite == 0);
+}
+
+TEST_CASE("a flat view volume leaves only the entries dividing by its zero extent undefined", "[verify]") {
+  // ortho with b = t = 1: row 1's scale 2/(t−b) and offset −(t+b)/(t−b) do not exist.
+  const test_case c = make_case(operation::ortho, scalar_type::f64, {-1, 1, 1, 1, 1, 3});
+  // By hand (gl): [1 0 0 0; 0 ? 0 ?; 0 0 −1 −2; 0 0 0 1].
+  const double inf = std::numeric_limits<double>::infinity();
+  const std::vector<double> out{1, 0, 0, 0, 0, inf, 0, -inf, 0, 0, -1, -2, 0, 0, 0, 1};
+  const case_grade g = grade_case(c, conventions{}, out.data());
+  CHECK(g.max_ulps == 0);
+  CHECK(g.garbage == 0);
+  CHECK(g.nonfinite == 0);
+  CHECK_FALSE(g.outputs[5].exact_defined);
+  CHECK_FALSE(g.outputs[7].exact_defined);
+  CHECK(g.outputs[10].exact_defined);
+}
+
+TEST_CASE("the same seed gives the same cases, bit for bit", "[verify]") {
+  for (operation op : all_operations()) {
+    const auto a = generate_cases(op, scalar_type::f32, 30, 42);
+    const auto b = generate_cases(op, scalar_type::f32, 30, 42);
+    const auto d = generate_cases(op, scalar_type::f32, 30, 43);
+    REQUIRE(a.size() == 30);
+    bool differs = false;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      CHECK(case_json_line(a[i]) == case_json_line(b[i]));
+      differs = differs || a[i].inputs != d[i].inputs;
+      for (double x : a[i].inputs) CHECK(static_cast<double>(static_cast<float>(x)) == x);
+    }
+    CHECK(differs);
+  }
+}
+
+TEST_CASE("degenerate cases are exactly degenerate", "[verify]") {
+  for (const auto& c : generate_cases(operation::shadow_matrix, scalar_type::f64, 60, 5, input_class::degenerate)) {
+    rational s = 0;
+    for (std::size_t i = 0; i < 4; ++i) s += exact_value(c.inputs[i]) * exact_value(c.inputs[4 + i]);
+    CHECK(s == 0);
+    CHECK(std::isinf(closeness_to_degeneracy(c)));
+  }
+}
+
+TEST_CASE("a case line reads back to the same inputs", "[verify]") {
+  for (operation op : all_operations())
+    for (const auto& c : generate_cases(op, scalar_type::f64, 9, 11)) {
+      const test_case back = parse_case_line(case_json_line(c), 1);
+      CHECK(back.id == c.id);
+      CHECK(back.op == c.op);
+      CHECK(back.type == c.type);
+      CHECK(back.cls == c.cls);
+      CHECK(back.inputs == c.inputs);
+    }
+}
+
+TEST_CASE("exact decimals of binary floats", "[verify]") {
+  CHECK(exact_decimal(static_cast<double>(0.1f)) == "0.100000001490116119384765625");
+  CHECK(exact_decimal(-2.5) == "-2.5");
+  CHECK(exact_decimal(1024.0) == "1024");
+  CHECK(exact_decimal(std::ldexp(1.0, -3)) == "0.125");
+}
+
+TEST_CASE("malformed protocol lines are rejected with the culprit named", "[verify]") {
+  auto message = [](auto&& f) {
+    try {
+      f();
+    } catch (const error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  CHECK(message([] { parse_output_line(R"({"id": 3, "output": [0.1, 1, 2]})", 4, scalar_type::f32, 3); }) ==
+        "[shadowproof.protocol.output] line 4: \"output\"[0] = 0.1 is not exactly a f32 value (outputs are "
+        "never rounded by the grader)");
+  CHECK(message([] { parse_output_line(R"({"id": 3, "output": [1, 2]})", 2, scalar_type::f64, 3); }) ==
+        "[shadowproof.protocol.output] line 2: \"output\" must be an array of 3 numbers");
+  CHECK(message([] {
+          parse_case_line(R"({"id": 0, "op": "reflection-matrix", "type": "f32", "plane": [0, 0, 0, 1]})", 7);
+        }) == "[shadowproof.protocol.case] line 7: the plane needs a non-zero normal (a, b, c)");
+  CHECK(message([] { parse_case_line(R"({"id": 0, "op": "twist", "type": "f32"})", 1); }) ==
+        "[shadowproof.protocol.case] line 1: unknown \"op\" \"twist\"");
+  const output_line o =
+      parse_output_line(R"({"id": 5, "output": ["0x1.8p+0", null, "-inf"]})", 1, scalar_type::f32, 3);
+  CHECK(o.id == 5);
+  CHECK(o.values[0] == 1.5);
+  CHECK(std::isnan(o.values[1]));
+  CHECK(o.values[2] == -std::numeric_limits<double>::infinity());
+}
+
+// ----------------------------------------------------------------------------------------------
+// The filtered oracle must agree exactly with the all-rational one. Outputs come from the
+// library's own formulas instantiated in float/double (the naive float implementations).
+
+namespace {
+
+template <class T>
+std::vector<double> float_outputs(const test_case& c) {
+  const double* in = c.inputs.data();
+  auto v = [&](std::size_t i) { return static_cast<T>(in[i]); };
+  std::vector<double> out;
+  const T nan = std::numeric_limits<T>::quiet_NaN();
+  switch (c.op) {
+    case operation::shadow_matrix:
+    case operation::reflection_matrix: {
+      const plane<T> P{make_vec4<T>(v(0), v(1), v(2), v(3))};
+      const mat4<T> M = c.op == operation::reflection_matrix
+                            ? reflection_matrix(P)
+                            : shadow_matrix(P, light<T>{make_vec4<T>(v(4), v(5), v(6), v(7))});
+      for (std::size_t i = 0; i < 16; ++i) out.push_back(M(i / 4, i % 4));
+      break;
+    }
+    case operation::shadow_point: {
+      const plane<T> P{make_vec4<T>(v(0), v(1), v(2), v(3))};
+      const vec4<T> h = shadow_image(P, light<T>{make_vec4<T>(v(4), v(5), v(6), v(7))}, make_point<T>(v(8), v(9), v(10)));
+      for (std::size_t i = 0; i < 3; ++i) out.push_back(h[i] / h[3]);
+      break;
+    }
+    case operation::ortho:
+    case operation::frustum:
+      try {
+        const mat4<T> M = c.op == operation::ortho ? orthographic<T>(v(0), v(1), v(2), v(3), v(4), v(5), depth_convention::gl)
+                                                   : frustum<T>(v(0), v(1), v(2), v(3), v(4), v(5), depth_convention::gl);
+        for (std::size_t i = 0; i < 16; ++i) out.push_back(M(i / 4, i % 4));
+      } catch (const error&) {
+        out.assign(16, nan);
+      }
+      break;
+    case operation::normal_matrix: {
+      mat4<T> A = identity4<T>();
+      for (std::size_t i = 0; i < 9; ++i) A(i / 3, i % 3) = v(i);
+      try {
+        const mat4<T> G = normal_matrix3(A);
+        for (std::size_t i = 0; i < 9; ++i) out.push_back(G(i / 3, i % 3));
+      } catch (const error&) {
+        out.assign(9, nan);
+      }
+      break;
+    }
+  }
+  return out;
+}
+
+void require_same(const case_grade& a, const case_grade& b) {
+  REQUIRE(a.outputs.size() == b.outputs.size());
+  for (std::size_t i = 0; i < a.outputs.size(); ++i) {
+    const auto &x = a.outputs[i], &y = b.outputs[i];
+    REQUIRE(x.exact_defined == y.exact_defined);
+    REQUIRE(std::memcmp(&x.reference, &y.reference, sizeof(double)) == 0);
+    REQUIRE(x.ulps == y.ulps);
+    REQUIRE(x.nonfinite == y.nonfinite);
+    REQUIRE(x.garbage == y.garbage);
+    REQUIRE((x.relative == y.relative || (std::isnan(x.relative) && std::isnan(y.relative))));
+  }
+  REQUIRE(a.max_ulps == b.max_ulps);
+  REQUIRE(a.worst_output == b.worst_output);
+  REQUIRE(a.exact_class == b.exact_class);
+  REQUIRE(a.got_class == b.got_class);
+  REQUIRE(a.misclassified == b.misclassified);
+  REQUIRE(a.plane_value == b.plane_value);
+  REQUIRE(a.scale_pivot == b.scale_pivot);
+}
+
+}  // namespace
+
+TEST_CASE("the filtered oracle agrees exactly with the all-rational oracle", "[verify][oracle]") {
+  const conventions canonical{};
+  conventions homogeneous;
+  homogeneous.homogeneous = true;
+  conventions clamped;
+  clamped.clamps_behind_receiver = true;
+  clamped.directional_only = true;
+  oracle_counters counters;
+  std::size_t graded = 0;
+  for (operation op : all_operations())
+    for (scalar_type type : {scalar_type::f32, scalar_type::f64})
+      for (const conventions* conv : {&canonical, static_cast<const conventions*>(&homogeneous),
+                                      static_cast<const conventions*>(&clamped)}) {
+        if (conv == &clamped && op != operation::shadow_point) continue;
+        const auto cases = generate_cases(op, type, 150, 2024 + static_cast<int>(op), std::nullopt, *conv);
+        std::mt19937_64 rng(7);
+        for (const auto& c : cases) {
+          std::vector<double> out = type == scalar_type::f32 ? float_outputs<float>(c) : float_outputs<double>(c);
+          // Also grade outputs a few ulps off the float result, and exact copies of inputs.
+          if (rng() % 4 == 0)
+            for (double& x : out)
+              if (std::isfinite(x)) x = type == scalar_type::f32 ? std::nextafter(static_cast<float>(x), 1e30f) : std::nextafter(x, 1e300);
+          const case_grade fast = grade_case(c, *conv, out.data(), oracle_mode::filtered, &counters);
+          const case_grade slow = grade_case(c, *conv, out.data(), oracle_mode::naive);
+          INFO("op " << to_string(op) << ", type " << to_string(type) << ", case " << case_json_line(c));
+          require_same(fast, slow);
+          ++graded;
+        }
+      }
+  CHECK(graded == 6 * 2 * 2 * 150 + 2 * 150);
+  // The comparison is only meaningful if intervals decide most cases on their own.
+  CHECK(counters.decided_by_intervals > 4 * counters.fell_back_to_rationals);
+}
