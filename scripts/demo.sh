@@ -7,4 +7,4 @@ build="${1:-$root/build}"
 "$root/scripts/setup.sh"
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release
 cmake --build "$build" -j"$(nproc)" --target shadowproof_cli
-"$build/shadowproof" demo
+"$build/shadowproof" demo --svg "$build/demo-shadow.svg"

@@ -57,6 +57,22 @@ TEST_CASE("an output off by exactly one ulp grades as 1 ulp and 1 bit", "[verify
   CHECK(g.nonfinite == 0);
 }
 
+TEST_CASE("an exact tie between two floats rounds to even in both oracles", "[verify]") {
+  // P = (0, 1, 2^-12, 0), L = (1, 1, 2^-12, 0): P·L = 1 + 2^-24, exactly halfway between the
+  // floats 1 and 1 + 2^-23, and entry (0,0) = P·L − L₀P₀ = 1 + 2^-24. Ties go to even: 1.
+  const double t = std::ldexp(1.0, -12);
+  const test_case c = make_case(operation::shadow_matrix, scalar_type::f32, {0, 1, t, 0, 1, 1, t, 0});
+  std::vector<double> out(16, 0.0);
+  out[0] = 1.0;
+  for (oracle_mode mode : {oracle_mode::filtered, oracle_mode::naive}) {
+    const case_grade g = grade_case(c, conventions{}, out.data(), mode);
+    CHECK(g.outputs[0].reference == 1.0);
+    CHECK(g.outputs[0].ulps == 0);
+  }
+  out[0] = 1.0 + std::ldexp(1.0, -23);
+  CHECK(grade_case(c, conventions{}, out.data()).outputs[0].ulps == 1);
+}
+
 TEST_CASE("the exact matrix itself grades as correctly rounded", "[verify]") {
   const test_case c = make_case(operation::shadow_matrix, scalar_type::f64, ground_inputs);
   const case_grade g = grade_case(c, conventions{}, ground_matrix.data());

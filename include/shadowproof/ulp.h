@@ -31,11 +31,14 @@ std::int64_t ordinal(T x) {
 
 /// Number of representable T values strictly after min(a, b) up to and including max(a, b):
 /// 0 when a == b (also for −0 vs +0), 1 for neighbours. Finite a, b only; the distance between
-/// the largest finite values of opposite sign fits easily in 64 bits.
+/// the largest finite values of opposite sign fits in 64 unsigned bits.
 template <class T>
 std::uint64_t ulp_distance(T a, T b) {
   const std::int64_t x = ordinal(a), y = ordinal(b);
-  return x > y ? static_cast<std::uint64_t>(x - y) : static_cast<std::uint64_t>(y - x);
+  // The difference can exceed INT64_MAX (doubles of opposite sign near the largest finite
+  // value), but never 2^64: subtract in unsigned arithmetic, where wrap-around gives it exactly.
+  return x > y ? static_cast<std::uint64_t>(x) - static_cast<std::uint64_t>(y)
+               : static_cast<std::uint64_t>(y) - static_cast<std::uint64_t>(x);
 }
 
 /// Bits of error = log2(ulps + 1): 0 for a correctly rounded result, 1 for one ulp off, and

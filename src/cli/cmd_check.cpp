@@ -169,6 +169,7 @@ int run_check(const check_options& o) {
         j["type"] = std::string(to_string(r.impl->type));
         j["class"] = row.cls;
         j["origin"] = r.impl->origin;
+        j["conventions"] = conventions_json(r.impl->conv);
         doc["results"].push_back(j);
       }
       rows.push_back(std::move(row));

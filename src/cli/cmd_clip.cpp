@@ -1,12 +1,14 @@
 // shadowproof clip: the exact shadow region of a scene file.
 #include <fstream>
 #include <iostream>
+#include <sstream>
 #include <memory>
 
 #include <nlohmann/json.hpp>
 
 #include "command.h"
 #include "shadowproof/clip.h"
+#include "shadowproof/io.h"
 #include "shadowproof/error.h"
 #include "shadowproof/svg.h"
 
@@ -103,9 +105,9 @@ static const command_registration clip_registration{command{
         options.keep_projected = !args->svg_file.empty();
         const shadow_region r = compute_shadow_region(s, options);
         if (!args->svg_file.empty()) {
-          std::ofstream svg(args->svg_file);
-          if (!svg) throw error("io.unwritable", "cannot write the SVG file '" + args->svg_file + "'");
+          std::ostringstream svg;
           write_svg(svg, r, "shadow of " + args->scene_file);
+          write_file_atomically(args->svg_file, svg.str());
         }
         std::unique_ptr<float_comparison> cmp;
         if (args->compare_float) cmp = std::make_unique<float_comparison>(compare_with_float(s, r));

@@ -1,9 +1,13 @@
 // shadowproof demo: a bundled scene, its exact shadow matrices, classes and on-plane check.
 #include <iostream>
+#include <sstream>
 
 #include "command.h"
 #include "print.h"
 #include "shadowproof/classify.h"
+#include "shadowproof/clip.h"
+#include "shadowproof/io.h"
+#include "shadowproof/svg.h"
 #include "shadowproof/reflect.h"
 #include "shadowproof/shadow.h"
 
@@ -72,9 +76,33 @@ int run_demo() {
   return ok && involution ? 0 : 1;
 }
 
+// The exact shadow region of the bundled clipping scene (examples/scenes/demo.json), with its
+// picture when asked for one.
+void run_clip_demo(const std::string& svg_path) {
+  std::cout << "\n== exact shadow region on a finite receiver (examples/scenes/demo.json)\n";
+  clip_options options;
+  options.keep_projected = !svg_path.empty();
+  const shadow_region region = compute_shadow_region(make_demo_scene(), options);
+  print_region_report(std::cout, region);
+  if (!svg_path.empty()) {
+    std::ostringstream svg;
+    write_svg(svg, region, "shadowproof demo: exact shadow on the receiver");
+    write_file_atomically(svg_path, svg.str());
+    std::cout << "picture written to " << svg_path << "\n";
+  }
+}
+
 const command_registration registration{command{
     "demo", "run the bundled example scene: matrices, classes and exact checks",
-    [](CLI::App&, const global_options&) -> std::function<int()> { return [] { return run_demo(); }; }}};
+    [](CLI::App& app, const global_options&) -> std::function<int()> {
+      auto svg_path = std::make_shared<std::string>();
+      app.add_option("--svg", *svg_path, "also draw the clipping example's exact shadow region to this SVG file");
+      return [svg_path] {
+        const int code = run_demo();
+        run_clip_demo(*svg_path);
+        return code;
+      };
+    }}};
 
 }  // namespace
 }  // namespace shadowproof::cli

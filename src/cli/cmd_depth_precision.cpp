@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "command.h"
+#include "shadowproof/io.h"
 #include "print.h"
 #include "projection_options.h"
 #include "shadowproof/depth_precision.h"
@@ -62,8 +63,7 @@ nlohmann::json sample_json(const depth_sample& s) {
 
 void write_svg(const std::string& path, const std::string& title, const std::vector<rational>& distances,
                const std::vector<depth_precision_report>& reports) {
-  std::ofstream out(path);
-  if (!out) throw error("cli.output", "cannot write the SVG file " + path);
+  std::ostringstream out;
   const double width = 800, height = 480, left = 80, right = 240, top = 40, bottom = 60;
   double x0 = std::log10(to_nearest_double(distances.front())), x1 = std::log10(to_nearest_double(distances.back()));
   double y0 = 1e300, y1 = -1e300;
@@ -118,6 +118,7 @@ void write_svg(const std::string& path, const std::string& title, const std::vec
         << reports[k].distinct_values << " values)</text>\n";
   }
   out << "</svg>\n";
+  write_file_atomically(path, out.str());
 }
 
 int run_depth_precision(const depth_precision_options& o, const global_options& g) {

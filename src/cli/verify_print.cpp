@@ -127,6 +127,20 @@ nlohmann::json worst_json(const case_grade& g, const test_case& c, depth_convent
   return j;
 }
 
+nlohmann::json conventions_json(const conventions& c) {
+  return {{"storage", c.storage == storage_order::row_major ? "row-major" : "column-major"},
+          {"vectors", c.vectors == vector_side::column ? "column" : "row"},
+          {"light", c.light == light_sign::towards_light ? "towards-light" : "along-rays"},
+          {"depth", std::string(to_string(c.depth))},
+          {"normalises_plane", c.normalises_plane},
+          {"homogeneous", c.homogeneous},
+          {"directional_only", c.directional_only},
+          {"point_light_only", c.point_light_only},
+          {"unit_normal", c.unit_normal},
+          {"symmetric_view", c.symmetric_view},
+          {"clamps_behind_receiver", c.clamps_behind_receiver}};
+}
+
 nlohmann::json summary_json(const grade_summary& s, const case_lookup& lookup, depth_convention depth) {
   nlohmann::json worst = nlohmann::json::array();
   for (const auto& g : s.worst) worst.push_back(worst_json(g, lookup(g.id), depth));

@@ -40,6 +40,9 @@ std::string reproducer_command(const test_case& c, depth_convention depth = dept
 nlohmann::json summary_json(const grade_summary& s, const case_lookup& lookup,
                             depth_convention depth = depth_convention::gl);
 
+/// The declared conventions of an implementation as JSON (storage, vectors, light, depth, flags).
+nlohmann::json conventions_json(const conventions& c);
+
 /// One worst case as JSON.
 nlohmann::json worst_json(const case_grade& g, const test_case& c, depth_convention depth = depth_convention::gl);
 

@@ -49,10 +49,15 @@ void inverse_transpose(const double* in, double* out) {
   write_outputs(glm::value_ptr(g), 9, out);
 }
 
+std::string version() {
+  return "GLM " + std::to_string(GLM_VERSION_MAJOR) + "." + std::to_string(GLM_VERSION_MINOR) + "." +
+         std::to_string(GLM_VERSION_PATCH) + "." + std::to_string(GLM_VERSION_REVISION);
+}
+
 }  // namespace
 
 void add_glm(std::vector<implementation>& out) {
-  const std::string glm_version = "GLM " + std::to_string(GLM_VERSION);
+  const std::string glm_version = version();
   conventions column_major;
   column_major.storage = storage_order::column_major;
   out.push_back({"glm-ortho-f32", operation::ortho, scalar_type::f32, column_major,
@@ -73,10 +78,10 @@ void add_glm(std::vector<implementation>& out) {
   c.storage = storage_order::column_major;
   c.normalises_plane = true;
   out.push_back({"glm-reflect3d-f32", operation::reflection_matrix, scalar_type::f32, c,
-                 "GLM " + std::to_string(GLM_VERSION) + " translate · reflect3D(normalize(n)) · translate, float",
+                 version() + " translate · reflect3D(normalize(n)) · translate, float",
                  reflect<float>});
   out.push_back({"glm-reflect3d-f64", operation::reflection_matrix, scalar_type::f64, c,
-                 "GLM " + std::to_string(GLM_VERSION) + " translate · reflect3D(normalize(n)) · translate, double",
+                 version() + " translate · reflect3D(normalize(n)) · translate, double",
                  reflect<double>});
 }
 

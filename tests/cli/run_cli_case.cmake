@@ -4,6 +4,12 @@
 if(NOT DEFINED WORKING_DIRECTORY)
   set(WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
 endif()
+foreach(var ARGS STDOUT_REGEX STDERR_REGEX)
+  if(DEFINED ${var})
+    string(REPLACE "<lsq>" "[" ${var} "${${var}}")
+    string(REPLACE "<rsq>" "]" ${var} "${${var}}")
+  endif()
+endforeach()
 string(REPLACE "\\;" ";" ARGS "${ARGS}")
 execute_process(COMMAND ${EXE} ${ARGS}
   RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err

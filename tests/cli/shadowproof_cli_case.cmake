@@ -2,6 +2,14 @@
 function(shadowproof_cli_case)
   cmake_parse_arguments(C "STDOUT_EMPTY" "NAME;EXPECT_CODE;STDOUT_REGEX;STDERR_REGEX" "ARGS" ${ARGN})
   string(REPLACE ";" "\\;" joined "${C_ARGS}")
+  # Square brackets would suspend CMake's list splitting for the -D arguments below: encode
+  # them here, run_cli_case.cmake decodes them.
+  foreach(var joined C_STDOUT_REGEX C_STDERR_REGEX)
+    if(DEFINED ${var})
+      string(REPLACE "[" "<lsq>" ${var} "${${var}}")
+      string(REPLACE "]" "<rsq>" ${var} "${${var}}")
+    endif()
+  endforeach()
   set(defs -DEXE=$<TARGET_FILE:shadowproof_cli> "-DARGS=${joined}" -DEXPECT_CODE=${C_EXPECT_CODE})
   if(DEFINED C_STDOUT_REGEX)
     list(APPEND defs "-DSTDOUT_REGEX=${C_STDOUT_REGEX}")
