@@ -16,7 +16,7 @@ namespace {
 using shadowproof::rational;
 
 template <class F>
-bool all_finite(const shadowproof::shadow_case<F>& c) {
+bool all_finite(const shadowproof::generated_case<F>& c) {
   for (F x : c.plane) if (!std::isfinite(x)) return false;
   for (F x : c.light) if (!std::isfinite(x)) return false;
   for (F x : c.point) if (!std::isfinite(x)) return false;
@@ -46,7 +46,7 @@ void check_against_ray(const shadowproof::plane<rational>& P, const shadowproof:
 }
 
 template <class F>
-void check_case(const shadowproof::shadow_case<F>& c, bool strict) {
+void check_case(const shadowproof::generated_case<F>& c, bool strict) {
   using namespace shadowproof;
   if (!all_finite(c)) return;
   if (c.plane[0] == 0 && c.plane[1] == 0 && c.plane[2] == 0) return;

@@ -48,7 +48,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (impls.empty()) return 0;
   byte_source src(data, size);
   const implementation& impl = *impls[src.below(impls.size())];
-  shadow_case<double> g;
+  generated_case<double> g;
   if (impl.type == scalar_type::f32) {
     const auto f = decode_shadow_case<float>(src);
     std::copy(f.plane.begin(), f.plane.end(), g.plane.begin());

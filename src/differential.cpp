@@ -221,7 +221,7 @@ std::optional<std::uint64_t> metamorphic_violation(const implementation& impl, c
   return d;
 }
 
-test_case make_fuzz_case(const shadow_case<double>& g, const implementation& impl, std::uint64_t id) {
+test_case make_fuzz_case(const generated_case<double>& g, const implementation& impl, std::uint64_t id) {
   if (!is_supported(impl.op))
     throw error("fuzz.unsupported_operation", "fuzzing supports shadow-matrix, shadow-point and reflection-matrix, not " +
                                                   std::string(to_string(impl.op)) + " (" + impl.name + ")");
@@ -254,7 +254,7 @@ fuzz_report run_fuzz(const implementation& impl, const fuzz_settings& settings,
   auto generate = [&]() {
     if (single) {
       const auto f = generate_shadow_case<float>(src, req);
-      shadow_case<double> d;
+      generated_case<double> d;
       std::copy(f.plane.begin(), f.plane.end(), d.plane.begin());
       std::copy(f.light.begin(), f.light.end(), d.light.begin());
       std::copy(f.point.begin(), f.point.end(), d.point.begin());

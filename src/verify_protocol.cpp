@@ -83,8 +83,8 @@ test_case parse_case_line(std::string_view line, std::size_t line_number) {
       } catch (const error& e) {
         fail("\"" + g.name + "\"[" + std::to_string(i) + "]: " + e.what());
       }
-      if (!x) fail("\"" + g.name + "\"[" + std::to_string(i) + "] is not a finite " + std::string(to_string(c.type)) +
-                   " value");
+      if (!x) fail("\"" + g.name + "\"[" + std::to_string(i) + "] = " + j[g.name][i].dump() +
+                   " is not a finite number exactly representable in " + std::string(to_string(c.type)));
       c.inputs.push_back(*x == 0 ? 0.0 : *x);
     }
   }

@@ -14,7 +14,7 @@ using namespace shadowproof;
 namespace {
 
 template <class F>
-point_class exact_class(const shadow_case<F>& c) {
+point_class exact_class(const generated_case<F>& c) {
   auto q = [](F x) { return exact_value(static_cast<double>(x)); };
   return classify_point(make_plane(q(c.plane[0]), q(c.plane[1]), q(c.plane[2]), q(c.plane[3])),
                         make_light(q(c.light[0]), q(c.light[1]), q(c.light[2]), q(c.light[3])),

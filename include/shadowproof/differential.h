@@ -51,7 +51,7 @@ struct fuzz_report {
 /// The generated configuration as a case of `impl`'s operation and type, within its declared
 /// requirements. Exact families become `degenerate`, their ulp/2^-k neighbours
 /// `near_degenerate`, the rest `regular`.
-test_case make_fuzz_case(const shadow_case<double>& g, const implementation& impl, std::uint64_t id);
+test_case make_fuzz_case(const generated_case<double>& g, const implementation& impl, std::uint64_t id);
 
 /// Runs the campaign. `progress(cases, failures)` is called about once a second.
 fuzz_report run_fuzz(const implementation& impl, const fuzz_settings& settings,

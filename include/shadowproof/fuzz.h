@@ -46,10 +46,10 @@ class byte_source {
 /// Decodes a shadow case: the first byte picks the mode. Mode 0-5: the degeneracy-biased
 /// generator driven by the bytes; mode 6: small-integer grid [-8, 8]; mode 7: raw float bits.
 template <class F>
-shadow_case<F> decode_shadow_case(byte_source& src) {
+generated_case<F> decode_shadow_case(byte_source& src) {
   const std::uint8_t mode = src.byte() % 8;
   if (mode < 6) return generate_shadow_case<F>(src);
-  shadow_case<F> c;
+  generated_case<F> c;
   auto next = [&]() -> F {
     return mode == 6 ? F(static_cast<long>(src.below(17)) - 8) : src.raw<F>();
   };

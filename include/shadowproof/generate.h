@@ -13,7 +13,7 @@ namespace shadowproof {
 
 /// One configuration: receiver plane (a, b, c, d), homogeneous light (x, y, z, w), point (x, y, z).
 template <class F>
-struct shadow_case {
+struct generated_case {
   std::array<F, 4> plane{};
   std::array<F, 4> light{};
   std::array<F, 3> point{};
@@ -124,9 +124,9 @@ struct generator_requirements {
 };
 
 template <class F, class Source>
-shadow_case<F> generate_shadow_case(Source& src, const generator_requirements& req = {}) {
+generated_case<F> generate_shadow_case(Source& src, const generator_requirements& req = {}) {
   using namespace detail;
-  shadow_case<F> c;
+  generated_case<F> c;
   std::string family = exact_families[src.below(exact_families.size())];
   // Families that need a point light become their directional counterpart and vice versa.
   if (req.directional_only && family != "light_parallel" && family != "vertex_on_plane" &&

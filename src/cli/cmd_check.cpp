@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <iomanip>
 #include <iostream>
 #include <limits>
 #include <map>
@@ -61,6 +62,7 @@ class progress_bar {
 void write_svg(const std::string& path, const std::vector<impl_run>& runs) {
   std::ofstream f(path);
   if (!f) throw error("check.svg", "cannot write the SVG file '" + path + "'");
+  f << std::fixed << std::setprecision(1);  // a tenth of a pixel is plenty
   const double W = 960, left = 70, right = 250, top = 40, bottom = 60;
   const double H = std::max(560.0, top + 14.0 * static_cast<double>(runs.size()) + 30);  // room for the legend
   double xmin = 0, xmax = 0;
@@ -89,7 +91,7 @@ void write_svg(const std::string& path, const std::vector<impl_run>& runs) {
   for (double x = std::ceil((xmin + 10) / 20) * 20; x <= xmax; x += 20) {
     f << "<line x1=\"" << sx(x) << "\" x2=\"" << sx(x) << "\" y1=\"" << top << "\" y2=\"" << H - bottom
       << "\" stroke=\"#eee\"/><text x=\"" << sx(x) << "\" y=\"" << H - bottom + 16 << "\" text-anchor=\"middle\">"
-      << x << "</text>\n";
+      << static_cast<int>(x) << "</text>\n";
   }
   f << "<text x=\"" << sx(xmin + 4) << "\" y=\"" << H - bottom + 16 << "\" text-anchor=\"middle\">exact 0</text>\n";
   f << "<text x=\"" << W - right << "\" y=\"" << sy(66) << "\" text-anchor=\"end\">non-finite / garbage</text>\n";
