@@ -385,7 +385,7 @@ void region_builder::validate_sizes() {
     for (std::size_t f = 0; f < c.faces.size(); ++f) {
       if (c.faces[f].size() > lim.max_face_vertices)
         throw error("scene.too_large", face_name(c, f) + " has " + std::to_string(c.faces[f].size()) +
-                                           " vertices; at most " + std::to_string(lim.max_face_vertices) +
+                                           " vertices; at most " + std::to_string(lim.max_face_vertices) + " (raise it with --max-face-vertices)" +
                                            " per face");
       for (std::size_t k = 0; k < c.faces[f].size(); ++k)
         if (c.faces[f][k] >= c.vertices.size())
@@ -397,14 +397,14 @@ void region_builder::validate_sizes() {
   }
   if (nv > lim.max_vertices)
     throw error("scene.too_large", "the casters have " + std::to_string(nv) + " vertices; at most " +
-                                       std::to_string(lim.max_vertices));
+                                       std::to_string(lim.max_vertices) + " (raise it with --max-vertices)");
   if (nf > lim.max_faces)
     throw error("scene.too_large", "the casters have " + std::to_string(nf) + " faces; at most " +
-                                       std::to_string(lim.max_faces));
+                                       std::to_string(lim.max_faces) + " (raise it with --max-faces)");
   const auto check_ring = [&](const polygon3& p, const std::string& name) {
     if (p.vertices.size() > lim.max_face_vertices)
       throw error("scene.too_large", name + " has " + std::to_string(p.vertices.size()) +
-                                         " vertices; at most " + std::to_string(lim.max_face_vertices));
+                                         " vertices; at most " + std::to_string(lim.max_face_vertices) + " (raise it with --max-face-vertices)");
   };
   check_ring(scene_.receiver.outer, "/receiver/polygon");
   for (std::size_t h = 0; h < scene_.receiver.holes.size(); ++h)

@@ -4,8 +4,11 @@
 // oracle cannot disagree except through an undecided interval, which falls back.
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <limits>
+#include <type_traits>
 
+#include "oracle_fast.h"
 #include "oracle_interval.h"
 #include "shadowproof/classify.h"
 #include "shadowproof/error.h"
@@ -112,7 +115,11 @@ exact_outputs<N> canonical(const test_case& c, const conventions& conv) {
       const light<N> L = canonical_light<N>(in + 4, conv);
       const vec4<N> V = vec_from<N>(in + 8, 3, N(1));
       r.cls = classify_point(P, L, V);
-      if (conv.clamps_behind_receiver && *r.cls == point_class::behind_receiver) {
+      // A point on the receiver is its own shadow, also when the light is parallel to or on
+      // the receiver (then the whole line from V to the light lies in it and the matrix's
+      // image is the zero vector, but V is still where the line meets the receiver).
+      const bool own_image = *r.cls == point_class::on_receiver || *r.cls == point_class::line_in_plane;
+      if (own_image || (conv.clamps_behind_receiver && *r.cls == point_class::behind_receiver)) {
         for (std::size_t i = 0; i < 3; ++i) r.values.push_back(V[i]);
         break;
       }
@@ -183,10 +190,11 @@ exact_outputs<N> canonical(const test_case& c, const conventions& conv) {
 // Canonical row-major index of the implementation's output j of a k x k matrix under its
 // storage conventions.
 std::size_t canonical_index(std::size_t j, std::size_t k, const conventions& conv) {
-  std::size_t r = j / k, col = j % k;
-  if (conv.storage == storage_order::column_major) std::swap(r, col);
-  if (conv.vectors == vector_side::row) std::swap(r, col);  // v M = (Mᵀ v)ᵀ
-  return r * k + col;
+  // Column-major storage and row vectors each transpose; both together cancel.
+  const bool transposed = (conv.storage == storage_order::column_major) != (conv.vectors == vector_side::row);
+  if (!transposed) return j;
+  if (k == 4) return ((j & 3) << 2) | (j >> 2);  // the common case without a division
+  return (j % k) * k + j / k;
 }
 
 // Where the float image G lies on the line through the light and V (see image_class).
@@ -226,8 +234,9 @@ image_class classify_image(const test_case& c, const conventions& conv, const do
 }
 
 // The image class a correct result must have, for the exact classes where the side matters.
-// A point exactly on the receiver is left to the ulps metric: its image is the point itself,
-// and an image one ulp away from it would otherwise count as a flipped side.
+// A point exactly on the receiver (on_receiver, and line_in_plane, whose image is also the
+// point itself) is left to the ulps metric: an image one ulp away from it would otherwise
+// count as a flipped side.
 std::optional<image_class> comparable(point_class e, const conventions& conv) {
   switch (e) {
     case point_class::shadow: return image_class::shadow;
@@ -259,9 +268,45 @@ double plane_value(const double* in, const double* got) {
   }
 }
 
+// bits_of_error for the small ulp counts that dominate, looked up (the same values).
+const std::array<double, 64> bits_table = [] {
+  std::array<double, 64> t{};
+  for (std::size_t i = 0; i < t.size(); ++i) t[i] = bits_of_error(i);
+  return t;
+}();
+double bits_of(std::uint64_t ulps) { return ulps < bits_table.size() ? bits_table[ulps] : bits_of_error(ulps); }
+
+// ulp_distance without branches on the signs (the same count, ulp.h's definition).
+template <class F>
+std::uint64_t ulps_between(F a, F b) {
+  using bits_t = std::conditional_t<std::is_same_v<F, float>, std::uint32_t, std::uint64_t>;
+  constexpr int shift = std::is_same_v<F, float> ? 31 : 63;
+  auto position = [](F x) {
+    bits_t raw;
+    std::memcpy(&raw, &x, sizeof raw);
+    const auto magnitude = static_cast<std::int64_t>(raw & ~(bits_t(1) << shift));
+    const std::int64_t negative = -static_cast<std::int64_t>(raw >> shift);  // 0 or −1
+    return (magnitude ^ negative) - negative;
+  };
+  const std::int64_t x = position(a), y = position(b);
+  const std::uint64_t d = static_cast<std::uint64_t>(x) - static_cast<std::uint64_t>(y);
+  return x >= y ? d : std::uint64_t(0) - d;
+}
+
 template <class F>
 void grade_output(output_grade& g, double got_d, bool defined, F ref) {
   g.got = got_d;
+  const F got_f = static_cast<F>(got_d);
+  if (defined && std::isfinite(got_f) && std::isfinite(ref)) {  // the common case
+    g.exact_defined = true;
+    g.reference = static_cast<double>(ref);
+    g.ulps = ulps_between<F>(got_f, ref);
+    if (g.ulps == 0) return;  // bits and relative stay 0
+    g.bits = bits_of(g.ulps);
+    g.relative = ref == 0 ? std::numeric_limits<double>::infinity()
+                          : std::fabs((static_cast<double>(got_f) - g.reference) / g.reference);
+    return;
+  }
   g.exact_defined = defined;
   if (!defined) {
     g.garbage = std::isfinite(got_d);
@@ -281,23 +326,36 @@ void grade_output(output_grade& g, double got_d, bool defined, F ref) {
     extra = 1;
   }
   g.ulps = ulp_distance<F>(got, target) + extra;
-  g.bits = g.ulps ? bits_of_error(g.ulps) : 0.0;
+  g.bits = g.ulps ? bits_of(g.ulps) : 0.0;
   if (g.ulps == 0) g.relative = 0;
   else if (ref == 0) g.relative = std::numeric_limits<double>::infinity();
   else g.relative = std::fabs((static_cast<double>(got) - g.reference) / g.reference);
 }
 
+// The reference of every output in the implementation's layout (and scale, when graded up to
+// scale), already rounded to the output type.
+struct references {
+  std::array<double, 16> value;  // set where defined
+  std::array<bool, 16> defined;  // set for every output
+  bool all_defined = true;
+  std::optional<point_class> cls;
+  std::optional<std::size_t> pivot;
+};
+
+bool graded_up_to_scale(const test_case& c, const conventions& conv) {
+  return signature(c.op).matrix_size &&
+         (conv.homogeneous || (conv.normalises_plane && c.op == operation::shadow_matrix));
+}
+
 template <class N, class F>
-case_grade grade_with(const test_case& c, const conventions& conv, const double* got) {
-  case_grade g;
-  g.id = c.id;
-  g.cls = c.cls;
+references exact_references(const test_case& c, const conventions& conv, const double* got) {
+  references r;
   const exact_outputs<N> e = canonical<N>(c, conv);
+  r.all_defined = e.defined;
+  r.cls = e.cls;
   const auto& sig = signature(c.op);
   const std::size_t n = sig.output_count;
-  g.outputs.resize(n);
 
-  // Reference per output, in the implementation's layout (and scale, when homogeneous).
   std::array<N, 16> ref;
   std::array<bool, 16> defined;
   defined.fill(e.defined);
@@ -306,9 +364,7 @@ case_grade grade_with(const test_case& c, const conventions& conv, const double*
     ref[j] = e.values[i];
     if (!e.entry_undefined.empty() && e.entry_undefined[i]) defined[j] = false;
   }
-  const bool up_to_scale =
-      sig.matrix_size && (conv.homogeneous || (conv.normalises_plane && c.op == operation::shadow_matrix));
-  if (up_to_scale && e.defined) {
+  if (graded_up_to_scale(c, conv) && e.defined) {
     // Pivot: the defined entry of largest exact magnitude, the first one on ties.
     std::size_t k = 0;
     while (k + 1 < n && !defined[k]) ++k;
@@ -318,18 +374,51 @@ case_grade grade_with(const test_case& c, const conventions& conv, const double*
       N a = abs_n(ref[j]);
       if (sign_n(N(a - best)) > 0) { best = a; k = j; }
     }
-    g.scale_pivot = k;
+    r.pivot = k;
     // λ = got[k] / exact[k]; without a usable got[k] the scale stays 1 and the grade shows it.
     if (std::isfinite(got[k]) && got[k] != 0 && sign_n(ref[k]) != 0) {
       const N lambda = from_double<N>(got[k]) / ref[k];
       for (std::size_t j = 0; j < n; ++j) ref[j] = lambda * ref[j];
     }
   }
+  for (std::size_t j = 0; j < n; ++j) {
+    r.defined[j] = defined[j];
+    if (defined[j]) r.value[j] = static_cast<double>(round_exact<F>(ref[j]));
+  }
+  return r;
+}
 
+// Everything but the shadow-point class fields, from the references.
+template <class F>
+case_grade grade_outputs(const test_case& c, const double* got, const references& r) {
+  case_grade g;
+  g.id = c.id;
+  g.cls = c.cls;
+  g.scale_pivot = r.pivot;
+  const std::size_t n = signature(c.op).output_count;
+  g.outputs.resize(n);
   std::optional<std::size_t> first_bad;
   for (std::size_t j = 0; j < n; ++j) {
     auto& o = g.outputs[j];
-    if (defined[j]) grade_output<F>(o, got[j], true, round_exact<F>(ref[j]));
+    const F got_f = static_cast<F>(got[j]);
+    const F ref = static_cast<F>(r.value[j]);
+    if (r.defined[j] && std::isfinite(got_f) && std::isfinite(ref)) {
+      // grade_output's common case, with fewer branches (the same values).
+      o.got = got[j];
+      o.reference = r.value[j];
+      const std::uint64_t d = ulps_between<F>(got_f, ref);
+      o.ulps = d;
+      o.bits = bits_of(d);  // bits_of(0) = 0
+      // For ref = 0 and got ≠ 0 the quotient is ±inf, as grade_output says.
+      const double relative = std::fabs((static_cast<double>(got_f) - r.value[j]) / r.value[j]);
+      o.relative = d == 0 ? 0.0 : relative;
+      if (d > g.max_ulps) {
+        g.max_ulps = d;
+        g.worst_output = j;
+      }
+      continue;
+    }
+    if (r.defined[j]) grade_output<F>(o, got[j], true, ref);
     else grade_output<F>(o, got[j], false, F(0));
     if (o.nonfinite) ++g.nonfinite;
     if (o.garbage) ++g.garbage;
@@ -341,26 +430,79 @@ case_grade grade_with(const test_case& c, const conventions& conv, const double*
   }
   // A non-finite or garbage output is worse than any finite error.
   if (first_bad) g.worst_output = *first_bad;
-  g.max_bits = bits_of_error(g.max_ulps);
+  g.max_bits = g.max_ulps ? bits_of(g.max_ulps) : 0.0;
+  return g;
+}
 
+void set_point_class(case_grade& g, const references& r, const conventions& conv, image_class got_class,
+                     std::optional<double> plane_value) {
+  g.exact_class = r.cls;
+  g.got_class = got_class;
+  if (const auto want = comparable(*r.cls, conv)) g.misclassified = got_class != *want;
+  else if (r.all_defined) g.misclassified = got_class == image_class::nonfinite;
+  g.plane_value = plane_value;
+}
+
+template <class N, class F>
+case_grade grade_with(const test_case& c, const conventions& conv, const double* got) {
+  const references r = exact_references<N, F>(c, conv, got);
+  case_grade g = grade_outputs<F>(c, got, r);
   if (c.op == operation::shadow_point) {
-    g.exact_class = e.cls;
     const image_class got_class = classify_image<N>(c, conv, got);
-    g.got_class = got_class;
-    if (const auto want = comparable(*e.cls, conv)) g.misclassified = got_class != *want;
-    else if (e.defined) g.misclassified = got_class == image_class::nonfinite;
-    if (got_class != image_class::nonfinite) g.plane_value = plane_value<N>(c.inputs.data(), got);
+    std::optional<double> value;
+    if (got_class != image_class::nonfinite) value = plane_value<N>(c.inputs.data(), got);
+    set_point_class(g, r, conv, got_class, value);
   }
   return g;
 }
 
-
+// The dedicated f32 kernels (oracle_fast.h) for shadow-matrix, shadow-point and
+// reflection-matrix graded entry by entry; false when they do not cover or decide the case.
+bool grade_fast_f32(const test_case& c, const conventions& conv, const double* got, case_grade& out) {
+  if (graded_up_to_scale(c, conv)) return false;
+  detail::fast_reference fast;
+  if (!detail::fast_reference_f32(c.op, c.inputs.data(), conv, fast)) return false;
+  references r;
+  r.all_defined = fast.defined;
+  r.cls = fast.cls;
+  const auto& sig = signature(c.op);
+  for (std::size_t j = 0; j < sig.output_count; ++j) {
+    r.value[j] = fast.value[sig.matrix_size ? canonical_index(j, sig.matrix_size, conv) : j];
+    r.defined[j] = fast.defined;
+  }
+  out = grade_outputs<float>(c, got, r);
+  if (c.op == operation::shadow_point) {
+    const double* in = c.inputs.data();
+    image_class got_class;
+    if (!detail::fast_image_class_f32(in, conv, got, got_class)) {
+      try {
+        got_class = classify_image<ival32>(c, conv, got);
+      } catch (const detail::undecided&) {
+        got_class = classify_image<rational>(c, conv, got);
+      }
+    }
+    std::optional<double> value;
+    if (got_class != image_class::nonfinite) {
+      double v;
+      value = detail::fast_plane_value_f32(in, got, v) ? v : plane_value<ival32>(in, got);
+    }
+    set_point_class(out, r, conv, got_class, value);
+  }
+  return true;
+}
 
 }  // namespace
 
 case_grade grade_case(const test_case& c, const conventions& conv, const double* outputs,
                       oracle_mode mode, oracle_counters* counters) {
   if (mode == oracle_mode::filtered) {
+    if (c.type == scalar_type::f32) {
+      case_grade g;
+      if (grade_fast_f32(c, conv, outputs, g)) {
+        if (counters) ++counters->decided_by_intervals;
+        return g;
+      }
+    }
     try {
       case_grade g = c.type == scalar_type::f32 ? grade_with<ival32, float>(c, conv, outputs)
                                                 : grade_with<ival64, double>(c, conv, outputs);

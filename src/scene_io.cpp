@@ -2,6 +2,8 @@
 // literal text and is parsed exactly (0.1 is 1/10, never the double nearest to it).
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -23,7 +25,7 @@ constexpr char number_mark = '\x01';
 // Builds a json DOM like nlohmann's own DOM parser, except for numbers (see above).
 class exact_sax {
  public:
-  explicit exact_sax(json& root) : root_(root) {}
+  exact_sax(json& root, const scene_limits& limits) : root_(root), limits_(limits) {}
 
   bool null() { return add(json(nullptr)); }
   bool boolean(bool v) { return add(json(v)); }
@@ -36,10 +38,14 @@ class exact_sax {
   bool binary(json::binary_t&) { return add(json(nullptr)); }
   bool start_object(std::size_t) {
     json* j = place(json::object());
+    enter();
     stack_.push_back(j);
     return true;
   }
   bool key(json::string_t& k) {
+    // nlohmann keeps the last of duplicate keys silently; a scene with two "light"s is ambiguous.
+    if (stack_.back()->contains(k))
+      throw error("scene.duplicate_key", current_path(false) + ": the key \"" + k + "\" appears twice");
     key_ = k;
     return true;
   }
@@ -49,6 +55,7 @@ class exact_sax {
   }
   bool start_array(std::size_t) {
     json* j = place(json::array());
+    enter();
     stack_.push_back(j);
     return true;
   }
@@ -66,7 +73,38 @@ class exact_sax {
   }
 
  private:
+  // Depth is capped so a hostile document cannot exhaust memory or the stack later on.
+  void enter() {
+    if (stack_.size() + 1 > limits_.max_json_depth)
+      throw error("scene.too_deep", current_path(true) + ": JSON nested deeper than " +
+                                        std::to_string(limits_.max_json_depth) +
+                                        " levels (raise it with --max-json-depth)");
+  }
+
+  // JSON pointer of the innermost open container, plus its newest child when `with_child`
+  // (e.g. "/casters/1/polygon/2").
+  std::string current_path(bool with_child) const {
+    std::string p;
+    for (std::size_t i = 0; i < stack_.size(); ++i) {
+      const json& j = *stack_[i];
+      if (i + 1 < stack_.size())
+        p += "/" + (j.is_array() ? std::to_string(j.size() - 1) : last_key_of(j, *stack_[i + 1]));
+      else if (with_child)
+        p += "/" + (j.is_array() ? std::to_string(j.size() - 1) : key_);
+    }
+    return p.empty() ? "/" : p;
+  }
+
+  static std::string last_key_of(const json& object, const json& child) {
+    for (auto it = object.begin(); it != object.end(); ++it)
+      if (&it.value() == &child) return it.key();
+    return "?";
+  }
+
   json* place(json v) {
+    if (++values_ > limits_.max_json_values)
+      throw error("scene.too_large", "the scene has more than " + std::to_string(limits_.max_json_values) +
+                                         " JSON values (raise it with --max-json-values)");
     if (stack_.empty()) {
       root_ = std::move(v);
       return &root_;
@@ -85,8 +123,10 @@ class exact_sax {
   }
 
   json& root_;
+  const scene_limits& limits_;
   std::vector<json*> stack_;
   std::string key_;
+  std::size_t values_ = 0;
 };
 
 struct reader {
@@ -163,9 +203,9 @@ struct reader {
     total_vertices += vertices;
     total_faces += faces;
     if (total_vertices > limits.max_vertices)
-      fail("too_large", path, "the casters have more than " + std::to_string(limits.max_vertices) + " vertices");
+      fail("too_large", path, "the casters have more than " + std::to_string(limits.max_vertices) + " vertices (raise it with --max-vertices)");
     if (total_faces > limits.max_faces)
-      fail("too_large", path, "the casters have more than " + std::to_string(limits.max_faces) + " faces");
+      fail("too_large", path, "the casters have more than " + std::to_string(limits.max_faces) + " faces (raise it with --max-faces)");
   }
 
   caster mesh(const json& j, const std::string& path) {
@@ -193,7 +233,7 @@ struct reader {
       const json& face = array(fs[f], fp);
       if (face.size() < 3) fail("empty_polygon", fp, "a face needs at least 3 vertex indices, found " + std::to_string(face.size()));
       if (face.size() > limits.max_face_vertices)
-        fail("too_large", fp, "a face has at most " + std::to_string(limits.max_face_vertices) + " vertices");
+        fail("too_large", fp, "a face has at most " + std::to_string(limits.max_face_vertices) + " vertices (raise it with --max-face-vertices)");
       std::vector<std::size_t> idx;
       for (std::size_t k = 0; k < face.size(); ++k) {
         const std::string ip = fp + "/" + std::to_string(k);
@@ -201,7 +241,12 @@ struct reader {
         if (q.get_den() != 1 || sgn(q) < 0 || q >= rational(static_cast<unsigned long>(c.vertices.size())))
           fail("bad_index", ip, "vertex index " + to_string(q) + " is not an integer in [0, " +
                                     std::to_string(c.vertices.size()) + ")");
-        idx.push_back(q.get_num().get_ui());
+        const std::size_t index = q.get_num().get_ui();
+        // A face naming one vertex twice is a broken mesh, not a degenerate shape (coincident
+        // vertices with distinct indices are geometry and are reported as a case instead).
+        if (std::find(idx.begin(), idx.end(), index) != idx.end())
+          fail("repeated_index", ip, "vertex index " + std::to_string(index) + " appears twice in the face");
+        idx.push_back(index);
       }
       c.faces.push_back(std::move(idx));
     }
@@ -257,9 +302,17 @@ struct reader {
 
 }  // namespace
 
+void check_file_size(const std::string& path, const scene_limits& limits) {
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(path, ec);
+  if (!ec && size > limits.max_file_bytes)
+    throw error("io.too_large", path + " is larger than the limit of " + std::to_string(limits.max_file_bytes) +
+                                    " bytes (raise it with --max-file-bytes)");
+}
+
 scene parse_scene(const std::string& json_text, const std::string& base_directory, const scene_limits& limits) {
   json root;
-  exact_sax sax(root);
+  exact_sax sax(root, limits);
   json::sax_parse(json_text, &sax);
   reader r{limits, base_directory};
   return r.read(root);
@@ -267,7 +320,9 @@ scene parse_scene(const std::string& json_text, const std::string& base_director
 
 scene read_scene_file(const std::string& path, const scene_limits& limits) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw error("scene.unreadable", "cannot open the scene file '" + path + "'");
+  if (!in || std::filesystem::is_directory(path))
+    throw error("scene.unreadable", "cannot open the scene file '" + path + "'");
+  check_file_size(path, limits);
   std::ostringstream text;
   text << in.rdbuf();
   const auto slash = path.find_last_of('/');

@@ -95,7 +95,8 @@ TEST_CASE("size caps give a clear error instead of running out of memory") {
                 ".", small);
     FAIL("no error");
   } catch (const error& e) {
-    CHECK(std::string(e.what()) == "[shadowproof.scene.too_large] /casters/0/polygon: the casters have more than 2 vertices");
+    CHECK(std::string(e.what()) == "[shadowproof.scene.too_large] /casters/0/polygon: the casters have more than 2 vertices "
+                                   "(raise it with --max-vertices)");
   }
 }
 

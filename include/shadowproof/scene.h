@@ -55,6 +55,9 @@ struct scene_limits {
   /// clipping, quadratic (cubic in the worst case) in the face's size, hence the cap.
   std::size_t max_face_vertices = 4096;
   number_limits numbers{};               ///< size of every number read
+  std::size_t max_json_depth = 64;        ///< nesting of JSON arrays and objects
+  std::size_t max_json_values = 20'000'000;  ///< values in one JSON document
+  std::size_t max_file_bytes = std::size_t(256) << 20;  ///< size of a scene or mesh file
 };
 
 /// Reads a scene from JSON text. Schema:
@@ -81,6 +84,9 @@ caster read_off(std::istream& in, const std::string& what, const scene_limits& l
 /// Reads an OBJ mesh: "v x y z [w]" and "f a b c ..." (1-based, negative = relative to the
 /// end, "a/t/n" forms accepted); other statements are ignored. Numbers are read exactly.
 caster read_obj(std::istream& in, const std::string& what, const scene_limits& limits = {});
+
+/// Throws error "io.too_large" when the file at `path` is larger than limits.max_file_bytes.
+void check_file_size(const std::string& path, const scene_limits& limits);
 
 /// Reads an OFF or OBJ file chosen by its extension (.off / .obj, case-insensitive).
 /// Throws error "scene.mesh_unreadable" naming `what` and the path when it cannot be opened.

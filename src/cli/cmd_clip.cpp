@@ -82,6 +82,7 @@ struct clip_args {
   std::string svg_file;
   bool json = false;
   bool compare_float = false;
+  scene_limits limits;  ///< every cap a hostile scene could hit, each raised by its own flag
 };
 
 }  // namespace
@@ -96,8 +97,16 @@ static const command_registration clip_registration{command{
       app.add_option("--svg", args->svg_file, "write a picture of the region in the receiver's chart");
       app.add_flag("--compare-float", args->compare_float,
                    "also run the float pipeline (float shadow matrix + Sutherland-Hodgman) and report its errors");
+      auto& lim = args->limits;
+      app.add_option("--max-vertices", lim.max_vertices, "most caster vertices in a scene")->capture_default_str();
+      app.add_option("--max-faces", lim.max_faces, "most caster faces in a scene")->capture_default_str();
+      app.add_option("--max-face-vertices", lim.max_face_vertices, "most vertices of one face or polygon")
+          ->capture_default_str();
+      app.add_option("--max-json-depth", lim.max_json_depth, "deepest JSON nesting")->capture_default_str();
+      app.add_option("--max-json-values", lim.max_json_values, "most values in the scene JSON")->capture_default_str();
+      app.add_option("--max-file-bytes", lim.max_file_bytes, "largest scene or mesh file")->capture_default_str();
       return [args, &globals]() -> int {
-        scene_limits limits;
+        scene_limits limits = args->limits;
         limits.numbers = globals.limits;
         const scene s = read_scene_file(args->scene_file, limits);
         clip_options options;

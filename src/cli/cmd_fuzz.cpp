@@ -81,6 +81,11 @@ int run_fuzz_command(const fuzz_options& o) {
   s.seed = o.seed;
   s.ulps_threshold = o.max_ulps;
   s.metamorphic = !o.no_metamorphic;
+  if (!o.out_dir.empty()) {  // fail before a long run, not after it
+    std::error_code ec;
+    std::filesystem::create_directories(o.out_dir, ec);
+    if (ec) throw error("io.cannot_write", "cannot create the directory " + o.out_dir + ": " + ec.message());
+  }
   const bool terminal = isatty(STDERR_FILENO) == 1;
   const fuzz_report r = run_fuzz(impl, s, [&](std::size_t cases, std::size_t failures) {
     std::cerr << (terminal ? "\r" : "") << "fuzz " << impl.name << ": " << cases << " cases, " << failures
@@ -90,9 +95,6 @@ int run_fuzz_command(const fuzz_options& o) {
 
   if (!o.out_dir.empty()) {
     const std::filesystem::path dir = o.out_dir;
-    std::error_code ec;
-    std::filesystem::create_directories(dir, ec);
-    if (ec) throw error("io.cannot_write", "cannot create the directory " + dir.string() + ": " + ec.message());
     for (std::size_t k = 0; k < r.failures.size(); ++k) {
       const auto& f = r.failures[k];
       const std::string stem = impl.name + "-" + std::to_string(k) + "-" + std::string(to_string(f.kind));

@@ -71,6 +71,9 @@ shadowproof_cli_case(NAME "grade: an image on the wrong side is misclassified"
 shadowproof_cli_case(NAME "grade rejects an output line of the wrong length"
   ARGS grade ${verify_data}/point_case.jsonl ${verify_data}/ground_exact.jsonl EXPECT_CODE 2 STDOUT_EMPTY
   STDERR_REGEX "\\[shadowproof.protocol.output\\] line 1: \"output\" must be an array of 3 numbers")
+shadowproof_cli_case(NAME "grade rejects a case input that is not a float"
+  ARGS grade ${verify_data}/not_representable_case.jsonl ${verify_data}/ground_exact.jsonl EXPECT_CODE 2 STDOUT_EMPTY
+  STDERR_REGEX "\\[shadowproof.protocol.case\\] line 1: \"plane\"\\[0\\] = \"0.1\" is not a finite number exactly representable in f32")
 shadowproof_cli_case(NAME "grade rejects a missing file"
   ARGS grade ${verify_data}/no_such_file.jsonl ${verify_data}/ground_exact.jsonl EXPECT_CODE 2 STDOUT_EMPTY
   STDERR_REGEX "\\[shadowproof.grade.file\\] cannot read the cases file")

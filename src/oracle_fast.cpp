@@ -1,0 +1,407 @@
+// Dedicated f32 kernels of the filtered oracle (see oracle_fast.h). The library is built for
+// baseline x86-64, so no multiply-add is contracted into an FMA here and the error-free
+// transformations below hold as written.
+#include "oracle_fast.h"
+
+#include <cmath>
+#include <limits>
+
+namespace shadowproof::detail {
+namespace {
+
+constexpr double u = 0x1p-53;  // unit roundoff of double
+constexpr double tiny = std::numeric_limits<double>::denorm_min();
+constexpr double inflate = 1 + 0x1p-40;  // covers the rounding of a bound's own computation
+
+// Knuth's TwoSum: s + e = a + b exactly.
+inline void two_sum(double a, double b, double& s, double& e) {
+  s = a + b;
+  const double bb = s - a;
+  e = (a - (s - bb)) + (b - bb);
+}
+
+// Veltkamp's split: hi + lo = x exactly, each with at most 26 significant bits, so the product
+// of either with a float (24 bits) is exact in a double. No overflow for the magnitudes that
+// f32 inputs produce (below 2^900).
+inline void split(double x, double& hi, double& lo) {
+  const double c = 134217729.0 * x;  // 2^27 + 1
+  hi = c - (c - x);
+  lo = x - hi;
+}
+
+// Dekker's product: p + e = a b exactly, for the f32-derived magnitudes (no under/overflow).
+inline void two_product(double a, double b, double& p, double& e) {
+  p = a * b;
+  double a1, a2, b1, b2;
+  split(a, a1, a2);
+  split(b, b1, b2);
+  e = ((a1 * b1 - p) + a1 * b2 + a2 * b1) + a2 * b2;
+}
+
+// A sum of doubles kept as hi + lo with a rigorous bound on how far it is from the exact sum:
+// every term goes through TwoSum into hi, its exact error into lo (added in round-to-nearest,
+// at most (n + 1) u Σ|error| off), and terms that were already approximate add their own bound.
+struct accumulator {
+  double hi = 0, lo = 0, error_mass = 0, extra = 0;
+  int n = 0;
+
+  void add(double x) {  // x exact
+    double s, e;
+    two_sum(hi, x, s, e);
+    hi = s;
+    lo += e;
+    error_mass += std::fabs(e);
+    ++n;
+  }
+  void add(double x, double bound) {  // the exact term lies within x ± bound
+    add(x);
+    extra += bound;
+  }
+  // x · f exactly, f with at most 24 significant bits (a float); with `bound`, x stands for
+  // a value within x ± bound, so the term for f times that value is within ± |f| bound.
+  void add_product(double x, double f, double bound = 0) {
+    double x1, x2;
+    split(x, x1, x2);
+    add(x1 * f);
+    add(x2 * f);
+    if (bound != 0) extra += std::fabs(f) * bound * inflate + tiny;
+  }
+  bool exact() const { return error_mass == 0 && extra == 0; }  // then lo = 0, sum = hi
+  // Bound on |(hi + lo) − exact sum|.
+  double lo_bound() const {
+    return exact() ? 0.0 : ((n + 1) * u * error_mass + extra) * inflate + (n + 1) * tiny;
+  }
+  // The sum rounded once, y, and a bound E with the exact sum in [y − E, y + E].
+  void value(double& y, double& bound) const {
+    if (exact()) {
+      y = hi;
+      bound = 0;
+      return;
+    }
+    y = hi + lo;
+    bound = (u * std::fabs(y) + lo_bound()) * inflate + tiny;
+  }
+  // Sign of the exact sum: −1, 0, +1, or 2 when undecided.
+  int sign() const {
+    double y, bound;
+    value(y, bound);
+    if (bound == 0) return y > 0 ? 1 : (y < 0 ? -1 : 0);
+    if (std::fabs(y) > bound) return y > 0 ? 1 : -1;
+    return 2;
+  }
+};
+
+inline double down(double r) { return r - (std::fabs(r) * 2 * u + tiny); }
+inline double up(double r) { return r + (std::fabs(r) * 2 * u + tiny); }
+
+// The float nearest to every point of [y − bound, y + bound], if they share one.
+bool round_to_float(double y, double bound, double& out) {
+  if (!std::isfinite(y) || !(bound >= 0)) return false;
+  float a;
+  if (bound == 0) {
+    a = static_cast<float>(y);  // one correct rounding, ties to even
+  } else {
+    // Round-to-nearest is monotone: equal roundings of both ends decide every point.
+    a = static_cast<float>(down(y - bound));
+    const float b = static_cast<float>(up(y + bound));
+    if (!(a == b)) return false;
+  }
+  out = a == 0 ? 0.0 : static_cast<double>(a);
+  return true;
+}
+
+bool round_to_float(const accumulator& acc, double& out) {
+  double y, bound;
+  acc.value(y, bound);
+  return round_to_float(y, bound, out);
+}
+
+// A denominator prepared once for several quotients: its value yd within ± ed, the relative
+// bound b = ed / |yd| and the reciprocal 1/yd rounded once.
+struct denominator {
+  double yd = 0, ed = 0, b = 0, inverse = 0;
+  bool usable = false;
+  explicit denominator(const accumulator& den) {
+    den.value(yd, ed);
+    if (!(std::fabs(yd) > ed)) return;
+    b = ed / std::fabs(yd);
+    inverse = 1 / yd;
+    usable = b < 0x1p-20 && std::isfinite(inverse);
+  }
+};
+
+// The exact quotient num / den rounded to float.
+bool round_quotient_to_float(const accumulator& num, const denominator& den, double& out) {
+  if (!den.usable) return false;
+  double yn, en;
+  num.value(yn, en);
+  if (en == 0 && yn == 0) {
+    out = 0;
+    return true;
+  }
+  if (!(std::fabs(yn) > en)) return false;
+  // num = yn (1 + α), den = yd (1 + β), |α| ≤ a, |β| ≤ b ≤ 2^-20; q = yn (1/yd) rounded twice
+  // is yn/yd (1 + δ), |δ| ≤ 2u + u²; so |num/den − q| ≤ |q| (2u + (a + b)/(1 − b)) (1 + 3u).
+  const double q = yn * den.inverse;
+  if (!std::isfinite(q)) return false;
+  const double a = en == 0 ? 0.0 : en / std::fabs(yn);
+  const double bound = std::fabs(q) * (2 * u + (a + den.b) * (1 + 0x1p-18)) * (1 + 0x1p-30) + tiny;
+  if (round_to_float(q, bound, out)) return true;
+  if (en == 0 && den.ed == 0) {  // both exact: is the quotient a double (e.g. a float midpoint)?
+    const double qd = yn / den.yd;
+    double p, e;
+    two_product(qd, den.yd, p, e);
+    if (p == yn && e == 0) return round_to_float(qd, 0, out);
+  }
+  return false;
+}
+
+bool is_float(double x) { return static_cast<double>(static_cast<float>(x)) == x; }
+
+// The canonical light: a directional light given along its rays is negated (exact).
+void canonical_light(const double* in, const conventions& conv, double* L) {
+  const bool flip = conv.light == light_sign::along_rays && in[3] == 0;
+  for (int i = 0; i < 3; ++i) L[i] = flip ? -in[i] : in[i];
+  L[3] = in[3];
+}
+
+// M = (P·L) I − L Pᵀ: off-diagonal entries are one exact product; the diagonal entry i is
+// P·L − L_i P_i = Σ_{j≠i} P_j L_j exactly (the same exact value, fewer terms).
+bool shadow_matrix_f32(const double* P, const double* L, fast_reference& out) {
+  out.count = 16;
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c) {
+      double& v = out.value[r * 4 + c];
+      if (r != c) {
+        if (!round_to_float(-(L[r] * P[c]), 0, v)) return false;
+        continue;
+      }
+      accumulator acc;
+      for (int j = 0; j < 4; ++j)
+        if (j != r) acc.add(P[j] * L[j]);
+      if (!round_to_float(acc, v)) return false;
+    }
+  return true;
+}
+
+// M = I − 2 n nᵀ/|n|² with the offset column −2 d n/|n|²: entry (i, j) is
+// (δ_ij |n|² − 2 n_i n_j) / |n|², a quotient of exact sums of float products.
+bool reflection_matrix_f32(const double* P, fast_reference& out) {
+  out.count = 16;
+  accumulator squares;
+  for (int j = 0; j < 3; ++j) squares.add(P[j] * P[j]);
+  const denominator nn(squares);
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 4; ++j) {
+      accumulator num;
+      if (i == j) {
+        for (int k = 0; k < 3; ++k) num.add(k == i ? -(P[k] * P[k]) : P[k] * P[k]);
+      } else {
+        num.add(-2 * (P[i] * P[j]));
+      }
+      if (!round_quotient_to_float(num, nn, out.value[i * 4 + j])) return false;
+    }
+  }
+  out.value[12] = out.value[13] = out.value[14] = 0;
+  out.value[15] = 1;
+  return true;
+}
+
+// Image of V = (x, y, z, 1): with s = P·L, t = P·V and w = L_3, the image is (s V − t L)
+// divided by its w, D = s − w t. s and t are exact sums of float products kept as hi + lo;
+// s V_i and t L_i are split so that every product with a float stays exact.
+bool shadow_point_f32(const double* P, const double* L, const double* V3, const conventions& conv,
+                      fast_reference& out) {
+  out.count = 3;
+  const double V[4] = {V3[0], V3[1], V3[2], 1};
+  accumulator s, t;
+  for (int j = 0; j < 4; ++j) {
+    s.add(P[j] * L[j]);
+    t.add(P[j] * V[j]);
+  }
+  const int ss = s.sign(), ts = t.sign();
+  if (ss == 2 || ts == 2) return false;
+  const double w = L[3];
+  const bool directional = w == 0;
+  // A point on the receiver is its own image, even when the light is parallel to or on the
+  // receiver (the whole line then lies in it).
+  if (ts == 0) {
+    out.cls = ss == 0 ? point_class::line_in_plane : point_class::on_receiver;
+    for (int i = 0; i < 3; ++i) out.value[i] = V[i] == 0 ? 0.0 : V[i];
+    return true;
+  }
+  if (ss == 0) {
+    out.cls = directional ? point_class::light_parallel : point_class::light_on_plane;
+  }
+  // D = s − w t, with t's double-double parts split to keep w t exact.
+  const double s_bound = s.lo_bound(), t_bound = t.lo_bound();
+  accumulator D;
+  D.add(s.hi);
+  D.add(s.lo, s_bound);
+  if (!directional) {
+    D.add_product(-t.hi, w);
+    D.add_product(-t.lo, w, t_bound);
+  }
+  const int ds = D.sign();
+  if (ds == 2) return false;
+  if (ss != 0) {
+    if (directional) {
+      out.cls = ts == ss ? point_class::shadow : point_class::behind_receiver;
+    } else if (V[0] * w == L[0] && V[1] * w == L[1] && V[2] * w == L[2]) {  // exact products
+      out.cls = point_class::at_light;
+    } else if (ds == 0) {
+      out.cls = point_class::at_infinity;  // w t = s
+    } else if ((w > 0 ? ts : -ts) != ss) {
+      out.cls = point_class::behind_receiver;  // sign(w t) ≠ sign(s)
+    } else {
+      out.cls = ds == ss ? point_class::shadow : point_class::beyond_light;  // |w t| < |s|
+    }
+  }
+  if (conv.clamps_behind_receiver && *out.cls == point_class::behind_receiver) {
+    for (int i = 0; i < 3; ++i) out.value[i] = V[i] == 0 ? 0.0 : V[i];
+    return true;
+  }
+  if (ds == 0) {  // image at infinity or the zero vector: no finite image
+    out.defined = false;
+    out.value[0] = out.value[1] = out.value[2] = 0;
+    return true;
+  }
+  const denominator den(D);
+  for (int i = 0; i < 3; ++i) {
+    // N_i = s V_i − t L_i.
+    accumulator N;
+    N.add_product(s.hi, V[i]);
+    N.add_product(s.lo, V[i], s_bound);
+    N.add_product(-t.hi, L[i]);
+    N.add_product(-t.lo, L[i], t_bound);
+    if (!round_quotient_to_float(N, den, out.value[i])) return false;
+  }
+  return true;
+}
+
+// Products rounded in double with their error added to a running bound: enough to decide
+// signs that do not cancel to the last bits (the exact ties are recognised before).
+struct rounded_sum {
+  double sum = 0, bound = 0;
+  void add_product(double a, double b) {
+    const double p = a * b;
+    sum += p;
+    bound += (std::fabs(p) + std::fabs(sum)) * u + 2 * tiny;
+  }
+  int sign() const {
+    const double b = bound * (1 + 0x1p-30);
+    if (std::fabs(sum) > b) return sum > 0 ? 1 : -1;
+    return 2;
+  }
+};
+
+}  // namespace
+
+bool fast_reference_f32(operation op, const double* in, const conventions& conv, fast_reference& out) {
+  switch (op) {
+    case operation::shadow_matrix: {
+      double L[4];
+      canonical_light(in + 4, conv, L);
+      return shadow_matrix_f32(in, L, out);
+    }
+    case operation::shadow_point: {
+      double L[4];
+      canonical_light(in + 4, conv, L);
+      return shadow_point_f32(in, L, in + 8, conv, out);
+    }
+    case operation::reflection_matrix: return reflection_matrix_f32(in, out);
+    default: return false;
+  }
+}
+
+bool fast_image_class_f32(const double* in, const conventions& conv, const double* got, image_class& out) {
+  for (int i = 0; i < 3; ++i) {
+    if (!std::isfinite(got[i])) {
+      out = image_class::nonfinite;
+      return true;
+    }
+    if (!is_float(got[i])) return false;
+  }
+  double L[4];
+  canonical_light(in + 4, conv, L);
+  const double* V = in + 8;
+  const bool same = got[0] == V[0] && got[1] == V[1] && got[2] == V[2];
+  const double w = L[3];
+  if (w == 0) {
+    // k = (V − G)·L: the differences are exact pairs, their products with L rounded.
+    if (same) {  // k = 0 exactly
+      out = image_class::on_receiver;
+      return true;
+    }
+    rounded_sum k;
+    for (int i = 0; i < 3; ++i) {
+      double h, l;
+      two_sum(V[i], -got[i], h, l);
+      k.add_product(h, L[i]);
+      k.add_product(l, L[i]);
+    }
+    const int sk = k.sign();
+    if (sk == 2) return false;
+    out = sk > 0 ? image_class::shadow : image_class::behind_receiver;
+    return true;
+  }
+  // Point light (see classify_image): a = Σ (w G_i − L_i)(w V_i − L_i), b = Σ (w V_i − L_i)²,
+  // a − b = w Σ (G_i − V_i)(w V_i − L_i), whose sign is sign(w) times that of the sum.
+  // Every difference is an exact pair (w V_i and w G_i are exact float products).
+  const bool at_light = V[0] * w == L[0] && V[1] * w == L[1] && V[2] * w == L[2];
+  if (at_light) {  // b = 0
+    out = image_class::other;
+    return true;
+  }
+  rounded_sum a, amb;
+  for (int i = 0; i < 3; ++i) {
+    double vh, vl, gh, gl, dh, dl;
+    two_sum(w * V[i], -L[i], vh, vl);
+    two_sum(w * got[i], -L[i], gh, gl);
+    two_sum(got[i], -V[i], dh, dl);
+    a.add_product(gh, vh);
+    a.add_product(gh, vl);
+    a.add_product(gl, vh);
+    a.add_product(gl, vl);
+    amb.add_product(dh, vh);
+    amb.add_product(dh, vl);
+    amb.add_product(dl, vh);
+    amb.add_product(dl, vl);
+  }
+  const int sa = a.sign();
+  if (sa == 2) return false;
+  if (sa < 0) {
+    out = image_class::beyond_light;
+    return true;
+  }
+  if (same) {  // a = b > 0
+    out = image_class::on_receiver;
+    return true;
+  }
+  int sd = amb.sign();
+  if (sd == 2) return false;
+  if (w < 0) sd = -sd;
+  out = sd > 0 ? image_class::shadow : image_class::behind_receiver;
+  return true;
+}
+
+bool fast_plane_value_f32(const double* in, const double* got, double& out) {
+  for (int i = 0; i < 3; ++i)
+    if (!is_float(got[i])) return false;
+  accumulator acc;
+  for (int i = 0; i < 3; ++i) acc.add(in[i] * got[i]);
+  acc.add(in[3]);
+  if (acc.exact()) {
+    out = acc.hi == 0 ? 0.0 : acc.hi;
+    return true;
+  }
+  // y + r = hi + lo exactly; the exact sum is within lo_bound of it. y is its correct rounding
+  // when that is strictly closer to y than half the gap to either neighbour (≥ |y| 2^-54).
+  double y, r;
+  two_sum(acc.hi, acc.lo, y, r);
+  if (!(std::fabs(r) + acc.lo_bound() < std::fabs(y) * 0x1p-54 * (1 - 0x1p-40))) return false;
+  out = y;
+  return true;
+}
+
+}  // namespace shadowproof::detail
