@@ -5,11 +5,17 @@
 //   bench/bench_oracle --agree=1000000 [--impl=NAME]
 // instead grades that many regular and that many near-degenerate cases per implementation with
 // both oracles and reports any difference (exit 1), the check the unit test runs on a sample.
+//   bench/bench_oracle --ratio=ROUNDS [--impl=NAME]
+// prints the README's table: cases per second of the float code, the filtered and the naive
+// oracle, alternating them ROUNDS times on the same cases and keeping each one's best round.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <ctime>
 
 #include <memory>
 #include <optional>
@@ -145,14 +151,77 @@ int agree(std::size_t count, const std::string& only) {
   return failures ? 1 : 0;
 }
 
+// Seconds of this thread's processor time.
+double thread_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+// Rounds alternate the float code, the filtered oracle and the naive oracle on the same 2000
+// cases, so that a change of load on a shared machine hits all three alike; each one's best
+// round (least thread time per case) is kept.
+int ratio(std::size_t rounds, const std::string& only) {
+  const std::vector<std::string> names{"seed000-general-f32", "eigen-intersection-f32", "reflect-divide-f32",
+                                       "seed000-general-f64", "eigen-intersection-f64", "reflect-divide-f64"};
+  std::printf("| implementation / class | float code itself | filtered oracle | all-rational oracle "
+              "| filtered ÷ rational | float code ÷ filtered |\n| --- | --- | --- | --- | --- | --- |\n");
+  for (const auto& name : names) {
+    if (!only.empty() && name != only) continue;
+    bool present = false;
+    for (const auto& impl : builtin_implementations()) present = present || impl.name == name;
+    if (!present) continue;
+    for (input_class cls : {input_class::regular, input_class::near_degenerate}) {
+      const fixture& f = make_fixture(name, cls);
+      std::vector<double> out(signature(f.impl->op).output_count);
+      const double n = static_cast<double>(f.cases.size());
+      double best_float = 1e300, best_filtered = 1e300, best_naive = 1e300;
+      std::uint64_t sink = 0;
+      for (std::size_t r = 0; r < rounds; ++r) {
+        double t0 = thread_seconds();
+        for (int k = 0; k < 100; ++k)
+          for (const auto& c : f.cases) {
+            f.impl->run(c.inputs.data(), out.data());
+            benchmark::DoNotOptimize(out.data());
+          }
+        best_float = std::min(best_float, (thread_seconds() - t0) / (100 * n));
+        t0 = thread_seconds();
+        for (int k = 0; k < 5; ++k)
+          for (std::size_t i = 0; i < f.cases.size(); ++i)
+            sink += grade_case(f.cases[i], f.impl->conv, f.outputs[i].data(), oracle_mode::filtered).max_ulps;
+        best_filtered = std::min(best_filtered, (thread_seconds() - t0) / (5 * n));
+        t0 = thread_seconds();
+        for (std::size_t i = 0; i < f.cases.size(); ++i)
+          sink += grade_case(f.cases[i], f.impl->conv, f.outputs[i].data(), oracle_mode::naive).max_ulps;
+        best_naive = std::min(best_naive, (thread_seconds() - t0) / n);
+      }
+      benchmark::DoNotOptimize(sink);
+      auto rate = [](double seconds) {
+        char text[32];
+        const double per_second = 1 / seconds;
+        if (per_second >= 1e6) std::snprintf(text, sizeof text, "%.3g M/s", per_second / 1e6);
+        else std::snprintf(text, sizeof text, "%.3g k/s", per_second / 1e3);
+        return std::string(text);
+      };
+      std::printf("| %s / %s | %s | %s | %s | %.1f× | %.1f× |\n", name.c_str(), std::string(to_string(cls)).c_str(),
+                  rate(best_float).c_str(), rate(best_filtered).c_str(), rate(best_naive).c_str(),
+                  best_naive / best_filtered, best_filtered / best_float);
+      std::fflush(stdout);
+    }
+  }
+  return 0;
+}
+
 int main(int argc, char** argv) {
-  std::size_t agree_count = 0;
+  std::size_t agree_count = 0, ratio_rounds = 0;
   std::string only;
   for (int i = 1; i < argc; ++i) {
     if (std::strncmp(argv[i], "--agree=", 8) == 0) agree_count = std::stoul(argv[i] + 8);
+    if (std::strncmp(argv[i], "--ratio=", 8) == 0) ratio_rounds = std::stoul(argv[i] + 8);
     if (std::strncmp(argv[i], "--impl=", 7) == 0) only = argv[i] + 7;
   }
   if (agree_count) return agree(agree_count, only);
+  if (ratio_rounds) return ratio(ratio_rounds, only);
   register_all();
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;

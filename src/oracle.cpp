@@ -411,11 +411,13 @@ case_grade grade_outputs(const test_case& c, const double* got, const references
       o.bits = bits_of(d);  // bits_of(0) = 0
       // For ref = 0 and got ≠ 0 the quotient is ±inf, as grade_output says.
       const double relative = std::fabs((static_cast<double>(got_f) - r.value[j]) / r.value[j]);
-      o.relative = d == 0 ? 0.0 : relative;
-      if (d > g.max_ulps) {
-        g.max_ulps = d;
-        g.worst_output = j;
-      }
+      std::uint64_t bits;  // relative when d ≠ 0, +0 otherwise (0/0 is NaN), without a branch
+      std::memcpy(&bits, &relative, sizeof bits);
+      bits &= std::uint64_t(0) - static_cast<std::uint64_t>(d != 0);
+      std::memcpy(&o.relative, &bits, sizeof bits);
+      const bool worse = d > g.max_ulps;
+      g.max_ulps = worse ? d : g.max_ulps;
+      g.worst_output = worse ? j : g.worst_output;
       continue;
     }
     if (r.defined[j]) grade_output<F>(o, got[j], true, ref);

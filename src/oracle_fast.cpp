@@ -110,6 +110,16 @@ bool round_to_float(double y, double bound, double& out) {
   return true;
 }
 
+// The float nearest to every point within q ± |q| relative, if they share one. The ends are
+// pushed out by 4u |q| more, which covers the rounding of their own computation.
+bool round_to_float_relative(double q, double relative, double& out) {
+  const double reach = std::fabs(q) * (relative + 4 * u) + tiny;
+  const float a = static_cast<float>(q - reach), b = static_cast<float>(q + reach);
+  if (!(a == b)) return false;
+  out = a == 0 ? 0.0 : static_cast<double>(a);
+  return true;
+}
+
 bool round_to_float(const accumulator& acc, double& out) {
   double y, bound;
   acc.value(y, bound);
@@ -120,6 +130,7 @@ bool round_to_float(const accumulator& acc, double& out) {
 // bound b = ed / |yd| and the reciprocal 1/yd rounded once.
 struct denominator {
   double yd = 0, ed = 0, b = 0, inverse = 0;
+  double exact_numerator = 0;  // the quotient's relative bound when the numerator is exact
   bool usable = false;
   explicit denominator(const accumulator& den) {
     den.value(yd, ed);
@@ -127,6 +138,7 @@ struct denominator {
     b = ed / std::fabs(yd);
     inverse = 1 / yd;
     usable = b < 0x1p-20 && std::isfinite(inverse);
+    exact_numerator = (2 * u + b * (1 + 0x1p-18)) * (1 + 0x1p-30);
   }
 };
 
@@ -144,9 +156,8 @@ bool round_quotient_to_float(const accumulator& num, const denominator& den, dou
   // is yn/yd (1 + δ), |δ| ≤ 2u + u²; so |num/den − q| ≤ |q| (2u + (a + b)/(1 − b)) (1 + 3u).
   const double q = yn * den.inverse;
   if (!std::isfinite(q)) return false;
-  const double a = en == 0 ? 0.0 : en / std::fabs(yn);
-  const double bound = std::fabs(q) * (2 * u + (a + den.b) * (1 + 0x1p-18)) * (1 + 0x1p-30) + tiny;
-  if (round_to_float(q, bound, out)) return true;
+  const double relative = en == 0 ? den.exact_numerator : (2 * u + (en / std::fabs(yn) + den.b) * (1 + 0x1p-18)) * (1 + 0x1p-30);
+  if (round_to_float_relative(q, relative, out)) return true;
   if (en == 0 && den.ed == 0) {  // both exact: is the quotient a double (e.g. a float midpoint)?
     const double qd = yn / den.yd;
     double p, e;

@@ -12,6 +12,7 @@
 
 #include "command.h"
 #include "shadowproof/error.h"
+#include "shadowproof/io.h"
 #include "shadowproof/impl_registry.h"
 #include "shadowproof/verify.h"
 #include "verify_print.h"
@@ -60,8 +61,7 @@ class progress_bar {
 // per implementation. Exactly degenerate cases (closeness −inf) sit in a band at the left;
 // cases with a non-finite or garbage output sit in a band at the top.
 void write_svg(const std::string& path, const std::vector<impl_run>& runs) {
-  std::ofstream f(path);
-  if (!f) throw error("check.svg", "cannot write the SVG file '" + path + "'");
+  std::ostringstream f;  // written atomically at the end: a killed run leaves the old file
   f << std::fixed << std::setprecision(1);  // a tenth of a pixel is plenty
   const double W = 960, left = 70, right = 250, top = 40, bottom = 60;
   const double H = std::max(560.0, top + 14.0 * static_cast<double>(runs.size()) + 30);  // room for the legend
@@ -113,6 +113,7 @@ void write_svg(const std::string& path, const std::vector<impl_run>& runs) {
       << "</text>\n";
   }
   f << "</svg>\n";
+  write_file_atomically(path, f.str());
 }
 
 int run_check(const check_options& o) {
