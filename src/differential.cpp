@@ -279,7 +279,11 @@ fuzz_report run_fuzz(const implementation& impl, const fuzz_settings& settings,
 
     for (failure_kind kind : kinds_of(grade, settings.ulps_threshold)) {
       ++report.failing_cases[std::string(to_string(kind))];
-      const std::string key = std::string(to_string(kind)) + "/" + family;
+      // Misclassifications are told apart by the pair of classes (shadow taken for an
+      // anti-shadow is a different bug from a shadow taken for a point on the receiver).
+      std::string key = std::string(to_string(kind)) + "/" + family;
+      if (kind == failure_kind::misclassified && grade.exact_class && grade.got_class)
+        key = "misclassified/" + std::string(to_string(*grade.exact_class)) + "->" + std::string(to_string(*grade.got_class));
       if (!seen.insert(key).second) continue;
       auto still_fails = [&](const std::vector<double>& inputs) {
         test_case t = c;
@@ -375,7 +379,12 @@ std::string catch2_regression_test(const implementation& impl, const fuzz_failur
     switch (f.kind) {
       case failure_kind::nonfinite: s << "  CHECK(g.nonfinite > 0);\n"; break;
       case failure_kind::garbage: s << "  CHECK(g.garbage > 0);\n"; break;
-      case failure_kind::misclassified: s << "  CHECK(g.misclassified);\n"; break;
+      case failure_kind::misclassified:
+        s << "  CHECK(g.misclassified);\n";
+        if (f.shrunk_grade.exact_class && f.shrunk_grade.got_class)
+          s << "  CHECK(shadowproof::to_string(*g.exact_class) == \"" << to_string(*f.shrunk_grade.exact_class) << "\");\n"
+            << "  CHECK(shadowproof::to_string(*g.got_class) == \"" << to_string(*f.shrunk_grade.got_class) << "\");\n";
+        break;
       default: s << "  CHECK(g.max_ulps >= " << f.threshold << "u);\n"; break;
     }
   }

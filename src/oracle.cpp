@@ -390,34 +390,35 @@ references exact_references(const test_case& c, const conventions& conv, const d
 
 // Everything but the shadow-point class fields, from the references.
 template <class F>
-case_grade grade_outputs(const test_case& c, const double* got, const references& r) {
-  case_grade g;
+void grade_outputs(case_grade& g, const test_case& c, std::size_t n, const double* got, const references& r) {
   g.id = c.id;
   g.cls = c.cls;
   g.scale_pivot = r.pivot;
-  const std::size_t n = signature(c.op).output_count;
   g.outputs.resize(n);
   std::optional<std::size_t> first_bad;
+  std::uint64_t max_ulps = 0;  // kept in registers, stored once
+  std::size_t worst = 0;
+  output_grade* const outputs = g.outputs.data();
   for (std::size_t j = 0; j < n; ++j) {
-    auto& o = g.outputs[j];
+    auto& o = outputs[j];
     const F got_f = static_cast<F>(got[j]);
     const F ref = static_cast<F>(r.value[j]);
-    if (r.defined[j] && std::isfinite(got_f) && std::isfinite(ref)) {
-      // grade_output's common case, with fewer branches (the same values).
+    if (__builtin_expect(r.defined[j] && std::isfinite(got_f) && std::isfinite(ref), 1)) {
+      // grade_output's common case, with fewer branches (the same values; for ref = 0 and
+      // got ≠ 0 the quotient below is ±inf, as there).
       o.got = got[j];
       o.reference = r.value[j];
       const std::uint64_t d = ulps_between<F>(got_f, ref);
       o.ulps = d;
       o.bits = bits_of(d);  // bits_of(0) = 0
-      // For ref = 0 and got ≠ 0 the quotient is ±inf, as grade_output says.
       const double relative = std::fabs((static_cast<double>(got_f) - r.value[j]) / r.value[j]);
       std::uint64_t bits;  // relative when d ≠ 0, +0 otherwise (0/0 is NaN), without a branch
       std::memcpy(&bits, &relative, sizeof bits);
       bits &= std::uint64_t(0) - static_cast<std::uint64_t>(d != 0);
       std::memcpy(&o.relative, &bits, sizeof bits);
-      const bool worse = d > g.max_ulps;
-      g.max_ulps = worse ? d : g.max_ulps;
-      g.worst_output = worse ? j : g.worst_output;
+      const bool worse = d > max_ulps;
+      max_ulps = worse ? d : max_ulps;
+      worst = worse ? j : worst;
       continue;
     }
     if (r.defined[j]) grade_output<F>(o, got[j], true, ref);
@@ -425,15 +426,16 @@ case_grade grade_outputs(const test_case& c, const double* got, const references
     if (o.nonfinite) ++g.nonfinite;
     if (o.garbage) ++g.garbage;
     if ((o.nonfinite || o.garbage) && !first_bad) first_bad = j;
-    if (o.counted() && o.ulps > g.max_ulps) {
-      g.max_ulps = o.ulps;
-      g.worst_output = j;
+    if (o.counted() && o.ulps > max_ulps) {
+      max_ulps = o.ulps;
+      worst = j;
     }
   }
+  g.max_ulps = max_ulps;
+  g.worst_output = worst;
   // A non-finite or garbage output is worse than any finite error.
   if (first_bad) g.worst_output = *first_bad;
   g.max_bits = g.max_ulps ? bits_of(g.max_ulps) : 0.0;
-  return g;
 }
 
 void set_point_class(case_grade& g, const references& r, const conventions& conv, image_class got_class,
@@ -448,7 +450,8 @@ void set_point_class(case_grade& g, const references& r, const conventions& conv
 template <class N, class F>
 case_grade grade_with(const test_case& c, const conventions& conv, const double* got) {
   const references r = exact_references<N, F>(c, conv, got);
-  case_grade g = grade_outputs<F>(c, got, r);
+  case_grade g;
+  grade_outputs<F>(g, c, signature(c.op).output_count, got, r);
   if (c.op == operation::shadow_point) {
     const image_class got_class = classify_image<N>(c, conv, got);
     std::optional<double> value;
@@ -458,22 +461,29 @@ case_grade grade_with(const test_case& c, const conventions& conv, const double*
   return g;
 }
 
-// The dedicated f32 kernels (oracle_fast.h) for shadow-matrix, shadow-point and
-// reflection-matrix graded entry by entry; false when they do not cover or decide the case.
-bool grade_fast_f32(const test_case& c, const conventions& conv, const double* got, case_grade& out) {
-  if (graded_up_to_scale(c, conv)) return false;
+// The dedicated kernels (oracle_fast.h): shadow-matrix, shadow-point and reflection-matrix for
+// float cases, shadow-matrix for double cases; false when they do not cover or decide the case.
+template <class F>
+bool grade_fast(const test_case& c, const conventions& conv, const double* got, case_grade& out) {
+  if (c.op != operation::shadow_matrix && c.op != operation::shadow_point && c.op != operation::reflection_matrix)
+    return false;
+  const bool matrix = c.op != operation::shadow_point;
+  if (matrix && (conv.homogeneous || (conv.normalises_plane && c.op == operation::shadow_matrix))) return false;
   detail::fast_reference fast;
-  if (!detail::fast_reference_f32(c.op, c.inputs.data(), conv, fast)) return false;
+  if constexpr (std::is_same_v<F, float>) {
+    if (!detail::fast_reference_f32(c.op, c.inputs.data(), conv, fast)) return false;
+  } else {
+    if (!detail::fast_reference_f64(c.op, c.inputs.data(), conv, fast)) return false;
+  }
   references r;
   r.all_defined = fast.defined;
   r.cls = fast.cls;
-  const auto& sig = signature(c.op);
-  for (std::size_t j = 0; j < sig.output_count; ++j) {
-    r.value[j] = fast.value[sig.matrix_size ? canonical_index(j, sig.matrix_size, conv) : j];
+  for (std::size_t j = 0; j < fast.count; ++j) {
+    r.value[j] = fast.value[matrix ? canonical_index(j, 4, conv) : j];
     r.defined[j] = fast.defined;
   }
-  out = grade_outputs<float>(c, got, r);
-  if (c.op == operation::shadow_point) {
+  grade_outputs<F>(out, c, fast.count, got, r);
+  if (std::is_same_v<F, float> && c.op == operation::shadow_point) {  // the kernels' image tests are f32 only
     const double* in = c.inputs.data();
     image_class got_class;
     if (!detail::fast_image_class_f32(in, conv, got, got_class)) {
@@ -498,12 +508,10 @@ bool grade_fast_f32(const test_case& c, const conventions& conv, const double* g
 case_grade grade_case(const test_case& c, const conventions& conv, const double* outputs,
                       oracle_mode mode, oracle_counters* counters) {
   if (mode == oracle_mode::filtered) {
-    if (c.type == scalar_type::f32) {
-      case_grade g;
-      if (grade_fast_f32(c, conv, outputs, g)) {
-        if (counters) ++counters->decided_by_intervals;
-        return g;
-      }
+    case_grade g;
+    if (c.type == scalar_type::f32 ? grade_fast<float>(c, conv, outputs, g) : grade_fast<double>(c, conv, outputs, g)) {
+      if (counters) ++counters->decided_by_intervals;
+      return g;
     }
     try {
       case_grade g = c.type == scalar_type::f32 ? grade_with<ival32, float>(c, conv, outputs)

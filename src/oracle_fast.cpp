@@ -112,7 +112,7 @@ bool round_to_float(double y, double bound, double& out) {
 
 // The float nearest to every point within q ± |q| relative, if they share one. The ends are
 // pushed out by 4u |q| more, which covers the rounding of their own computation.
-bool round_to_float_relative(double q, double relative, double& out) {
+[[gnu::always_inline]] inline bool round_to_float_relative(double q, double relative, double& out) {
   const double reach = std::fabs(q) * (relative + 4 * u) + tiny;
   const float a = static_cast<float>(q - reach), b = static_cast<float>(q + reach);
   if (!(a == b)) return false;
@@ -126,6 +126,32 @@ bool round_to_float(const accumulator& acc, double& out) {
   return round_to_float(y, bound, out);
 }
 
+// Recursive summation of n ≤ 4 exact terms: the sum y and the bound γ_{n−1} Σ|t_i| on its
+// error (Higham, Accuracy and Stability of Numerical Algorithms, §4.2), pushed out a little
+// further for the rounding of the bound itself.
+template <int n>
+void quick_sum(const double* t, double& y, double& bound) {
+  y = t[0];
+  double mass = std::fabs(t[0]);
+  for (int i = 1; i < n; ++i) {
+    y += t[i];
+    mass += std::fabs(t[i]);
+  }
+  bound = mass * ((n - 1) * u) * (1 + 0x1p-40) + tiny;
+}
+
+// The float nearest to the exact sum of n exact terms: first from the recursive sum and its
+// bound, then, when that straddles a rounding boundary, from the accumulator.
+template <int n>
+bool round_sum_to_float(const double* t, double& out) {
+  double y, bound;
+  quick_sum<n>(t, y, bound);
+  if (y != 0 && round_to_float(y, bound, out)) return true;
+  accumulator acc;
+  for (int i = 0; i < n; ++i) acc.add(t[i]);
+  return round_to_float(acc, out);
+}
+
 // A denominator prepared once for several quotients: its value yd within ± ed, the relative
 // bound b = ed / |yd| and the reciprocal 1/yd rounded once.
 struct denominator {
@@ -134,6 +160,10 @@ struct denominator {
   bool usable = false;
   explicit denominator(const accumulator& den) {
     den.value(yd, ed);
+    prepare();
+  }
+  denominator(double value, double bound) : yd(value), ed(bound) { prepare(); }
+  void prepare() {
     if (!(std::fabs(yd) > ed)) return;
     b = ed / std::fabs(yd);
     inverse = 1 / yd;
@@ -143,10 +173,8 @@ struct denominator {
 };
 
 // The exact quotient num / den rounded to float.
-bool round_quotient_to_float(const accumulator& num, const denominator& den, double& out) {
+[[gnu::always_inline]] inline bool round_quotient_to_float(double yn, double en, const denominator& den, double& out) {
   if (!den.usable) return false;
-  double yn, en;
-  num.value(yn, en);
   if (en == 0 && yn == 0) {
     out = 0;
     return true;
@@ -167,6 +195,12 @@ bool round_quotient_to_float(const accumulator& num, const denominator& den, dou
   return false;
 }
 
+bool round_quotient_to_float(const accumulator& num, const denominator& den, double& out) {
+  double yn, en;
+  num.value(yn, en);
+  return round_quotient_to_float(yn, en, den, out);
+}
+
 bool is_float(double x) { return static_cast<double>(static_cast<float>(x)) == x; }
 
 // The canonical light: a directional light given along its rays is negated (exact).
@@ -183,14 +217,15 @@ bool shadow_matrix_f32(const double* P, const double* L, fast_reference& out) {
   for (int r = 0; r < 4; ++r)
     for (int c = 0; c < 4; ++c) {
       double& v = out.value[r * 4 + c];
-      if (r != c) {
-        if (!round_to_float(-(L[r] * P[c]), 0, v)) return false;
+      if (r != c) {  // one exact product, below 2^256 in magnitude: one rounding
+        const float f = static_cast<float>(-(L[r] * P[c]));
+        v = f == 0 ? 0.0 : static_cast<double>(f);
         continue;
       }
-      accumulator acc;
-      for (int j = 0; j < 4; ++j)
-        if (j != r) acc.add(P[j] * L[j]);
-      if (!round_to_float(acc, v)) return false;
+      double terms[3];
+      for (int j = 0, k = 0; j < 4; ++j)
+        if (j != r) terms[k++] = P[j] * L[j];
+      if (!round_sum_to_float<3>(terms, v)) return false;
     }
   return true;
 }
@@ -199,22 +234,82 @@ bool shadow_matrix_f32(const double* P, const double* L, fast_reference& out) {
 // (δ_ij |n|² − 2 n_i n_j) / |n|², a quotient of exact sums of float products.
 bool reflection_matrix_f32(const double* P, fast_reference& out) {
   out.count = 16;
-  accumulator squares;
-  for (int j = 0; j < 3; ++j) squares.add(P[j] * P[j]);
-  const denominator nn(squares);
+  const double squares[3] = {P[0] * P[0], P[1] * P[1], P[2] * P[2]};
+  double y, bound;
+  quick_sum<3>(squares, y, bound);  // positive terms: a relative bound of 2u
+  const denominator quick(y, bound);
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 4; ++j) {
-      accumulator num;
-      if (i == j) {
-        for (int k = 0; k < 3; ++k) num.add(k == i ? -(P[k] * P[k]) : P[k] * P[k]);
-      } else {
-        num.add(-2 * (P[i] * P[j]));
+      double& v = out.value[i * 4 + j];
+      if (j < i) {  // −2 n_i n_j / |n|² is symmetric in i and j
+        v = out.value[j * 4 + i];
+        continue;
       }
-      if (!round_quotient_to_float(num, nn, out.value[i * 4 + j])) return false;
+      double terms[3] = {-2 * (P[i] * P[j]), 0, 0};  // exact
+      if (i == j) {
+        for (int k = 0; k < 3; ++k) terms[k] = k == i ? -squares[k] : squares[k];
+        quick_sum<3>(terms, y, bound);
+      } else {
+        y = terms[0];
+        bound = 0;
+      }
+      if (round_quotient_to_float(y, bound, quick, v)) continue;
+      // Undecided: the same quotient from accumulators, which also see exact zeros and ties.
+      accumulator nn, num;
+      for (int k = 0; k < 3; ++k) nn.add(squares[k]);
+      for (int k = 0; k < (i == j ? 3 : 1); ++k) num.add(terms[k]);
+      if (!round_quotient_to_float(num, denominator(nn), v)) return false;
     }
   }
   out.value[12] = out.value[13] = out.value[14] = 0;
   out.value[15] = 1;
+  return true;
+}
+
+// The same image from plain double arithmetic with a running error bound (Higham's γ_n bounds
+// for the dot products, first-order terms for the rest), for cases far enough from every
+// degeneracy: false whenever a sign, a zero or a rounding is not clearly decided, and then
+// shadow_point_f32 below does it with exact sums.
+bool shadow_point_quick_f32(const double* P, const double* L, const double* V3, const conventions& conv,
+                            fast_reference& out) {
+  out.count = 3;
+  const double p[4] = {P[0] * L[0], P[1] * L[1], P[2] * L[2], P[3] * L[3]};
+  const double q[4] = {P[0] * V3[0], P[1] * V3[1], P[2] * V3[2], P[3]};
+  double s, es, t, et;
+  quick_sum<4>(p, s, es);
+  quick_sum<4>(q, t, et);
+  if (!(std::fabs(s) > es) || !(std::fabs(t) > et)) return false;  // near zero: exact sums decide
+  const double w = L[3];
+  double D = s, ed = es;
+  if (w != 0) {
+    const double wt = w * t;
+    D = s - wt;
+    ed = (es + std::fabs(w) * et + u * (std::fabs(wt) + std::fabs(D))) * inflate;
+    if (!(std::fabs(D) > ed)) return false;
+  }
+  const int ss = s > 0 ? 1 : -1, ts = t > 0 ? 1 : -1, ds = D > 0 ? 1 : -1;
+  if (w == 0) {
+    out.cls = ts == ss ? point_class::shadow : point_class::behind_receiver;
+  } else if (V3[0] * w == L[0] && V3[1] * w == L[1] && V3[2] * w == L[2]) {
+    return false;  // the light itself: D = 0, which the bound cannot show
+  } else if ((w > 0 ? ts : -ts) != ss) {
+    out.cls = point_class::behind_receiver;
+  } else {
+    out.cls = ds == ss ? point_class::shadow : point_class::beyond_light;
+  }
+  if (conv.clamps_behind_receiver && *out.cls == point_class::behind_receiver) {
+    for (int i = 0; i < 3; ++i) out.value[i] = V3[i] == 0 ? 0.0 : V3[i];
+    return true;
+  }
+  const denominator den(D, ed);
+  for (int i = 0; i < 3; ++i) {
+    // N_i = s V_i − t L_i from the approximate s and t, each product and the difference
+    // rounded once.
+    const double a = s * V3[i], b = t * L[i], n = a - b;
+    const double en =
+        (std::fabs(V3[i]) * es + std::fabs(L[i]) * et + u * (std::fabs(a) + std::fabs(b) + std::fabs(n))) * inflate;
+    if (!round_quotient_to_float(n, en, den, out.value[i])) return false;
+  }
   return true;
 }
 
@@ -306,7 +401,60 @@ struct rounded_sum {
   }
 };
 
+// Exact sum of exact terms correctly rounded to double: y + r = hi + lo exactly, and y is the
+// correct rounding when the exact sum is strictly closer to y than half the gap to either
+// neighbour of y (at least |y| 2^-54).
+bool round_to_double(const accumulator& acc, double& out) {
+  if (acc.exact()) {
+    out = acc.hi == 0 ? 0.0 : acc.hi;
+    return true;
+  }
+  double y, r;
+  two_sum(acc.hi, acc.lo, y, r);
+  if (!(std::fabs(r) + acc.lo_bound() < std::fabs(y) * 0x1p-54 * (1 - 0x1p-40))) return false;
+  out = y;
+  return true;
+}
+
+// Doubles whose products (and Dekker's split of them) neither overflow nor underflow.
+bool moderate(double x) { return x == 0 || (std::fabs(x) > 0x1p-400 && std::fabs(x) < 0x1p400); }
+
+// f64 shadow matrix: off-diagonal entries −L_r P_c are one IEEE product, correctly rounded by
+// definition; a diagonal entry Σ_{j≠r} P_j L_j is a sum of three products, each split exactly
+// into two doubles by Dekker's product, and rounded once from the exact accumulator.
+bool shadow_matrix_f64(const double* P, const double* L, fast_reference& out) {
+  for (int i = 0; i < 4; ++i)
+    if (!moderate(P[i]) || !moderate(L[i])) return false;
+  out.count = 16;
+  double p[4], e[4];
+  for (int j = 0; j < 4; ++j) two_product(P[j], L[j], p[j], e[j]);
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c) {
+      double& v = out.value[r * 4 + c];
+      if (r != c) {
+        const double x = -(L[r] * P[c]);
+        v = x == 0 ? 0.0 : x;
+        continue;
+      }
+      accumulator acc;
+      for (int j = 0; j < 4; ++j)
+        if (j != r) {
+          acc.add(p[j]);
+          acc.add(e[j]);
+        }
+      if (!round_to_double(acc, v)) return false;
+    }
+  return true;
+}
+
 }  // namespace
+
+bool fast_reference_f64(operation op, const double* in, const conventions& conv, fast_reference& out) {
+  if (op != operation::shadow_matrix) return false;
+  double L[4];
+  canonical_light(in + 4, conv, L);
+  return shadow_matrix_f64(in, L, out);
+}
 
 bool fast_reference_f32(operation op, const double* in, const conventions& conv, fast_reference& out) {
   switch (op) {
@@ -318,6 +466,8 @@ bool fast_reference_f32(operation op, const double* in, const conventions& conv,
     case operation::shadow_point: {
       double L[4];
       canonical_light(in + 4, conv, L);
+      if (shadow_point_quick_f32(in, L, in + 8, conv, out)) return true;
+      out = fast_reference{};
       return shadow_point_f32(in, L, in + 8, conv, out);
     }
     case operation::reflection_matrix: return reflection_matrix_f32(in, out);
@@ -402,17 +552,7 @@ bool fast_plane_value_f32(const double* in, const double* got, double& out) {
   accumulator acc;
   for (int i = 0; i < 3; ++i) acc.add(in[i] * got[i]);
   acc.add(in[3]);
-  if (acc.exact()) {
-    out = acc.hi == 0 ? 0.0 : acc.hi;
-    return true;
-  }
-  // y + r = hi + lo exactly; the exact sum is within lo_bound of it. y is its correct rounding
-  // when that is strictly closer to y than half the gap to either neighbour (≥ |y| 2^-54).
-  double y, r;
-  two_sum(acc.hi, acc.lo, y, r);
-  if (!(std::fabs(r) + acc.lo_bound() < std::fabs(y) * 0x1p-54 * (1 - 0x1p-40))) return false;
-  out = y;
-  return true;
+  return round_to_double(acc, out);
 }
 
 }  // namespace shadowproof::detail

@@ -28,6 +28,11 @@ struct fast_reference {
 /// float. False when an operation is not covered or a rounding or sign is undecided.
 bool fast_reference_f32(operation op, const double* inputs, const conventions& conv, fast_reference& out);
 
+/// The canonical exact outputs of an f64 shadow-matrix case, correctly rounded to double (the
+/// only f64 operation with a dedicated kernel); false for other operations, inputs beyond
+/// 2^±400 in magnitude, or an undecided rounding.
+bool fast_reference_f64(operation op, const double* inputs, const conventions& conv, fast_reference& out);
+
 /// Class of the float image `got` of a shadow-point f32 case for a directional light (see
 /// image_class); false for a point light, a non-float output or an undecided sign.
 bool fast_image_class_f32(const double* inputs, const conventions& conv, const double* got, image_class& out);

@@ -172,6 +172,44 @@ TEST_CASE("a finite image where none exists is garbage; infinity there is fine",
   CHECK(h.nonfinite == 0);
 }
 
+TEST_CASE("a point on the receiver is its own shadow even when the light is parallel to it", "[verify]") {
+  // Receiver y = 0, directional light (1, 0, 0, 0) parallel to it, V = (3, 0, 5) on it:
+  // s = P·L = 0 and t = P·V = 0 (exact class line_in_plane). The line from V towards the light
+  // lies in the receiver and meets it at V, so the exact image is V = (3, 0, 5).
+  for (scalar_type type : {scalar_type::f32, scalar_type::f64})
+    for (oracle_mode mode : {oracle_mode::filtered, oracle_mode::naive}) {
+      INFO("type " << to_string(type) << (mode == oracle_mode::naive ? ", naive" : ", filtered"));
+      const test_case c = make_case(operation::shadow_point, type, {0, 1, 0, 0, 1, 0, 0, 0, 3, 0, 5});
+      const std::vector<double> itself{3, 0, 5};
+      const case_grade good = grade_case(c, conventions{}, itself.data(), mode);
+      REQUIRE(good.exact_class);
+      CHECK(*good.exact_class == point_class::line_in_plane);  // kept for reporting
+      CHECK(good.outputs[0].exact_defined);
+      CHECK(good.outputs[0].reference == 3.0);
+      CHECK(good.outputs[1].reference == 0.0);
+      CHECK(good.outputs[2].reference == 5.0);
+      CHECK(good.max_ulps == 0);
+      CHECK(good.garbage == 0);
+      CHECK(*good.got_class == image_class::on_receiver);
+      CHECK_FALSE(good.misclassified);
+      CHECK(*good.plane_value == 0.0);
+      // NaN there (what (P·L) V − (P·V) L = 0 divided by its w = 0 gives) is a failure.
+      const double nan = std::numeric_limits<double>::quiet_NaN();
+      const std::vector<double> undefined{nan, nan, nan};
+      const case_grade bad = grade_case(c, conventions{}, undefined.data(), mode);
+      CHECK(bad.nonfinite == 3);
+      CHECK(bad.garbage == 0);
+      CHECK(*bad.got_class == image_class::nonfinite);
+      CHECK(bad.misclassified);
+      // One float step along the receiver is one ulp, not a class change.
+      const std::vector<double> off{3, 0, type == scalar_type::f32 ? double(std::nextafter(5.0f, 6.0f)) : std::nextafter(5.0, 6.0)};
+      const case_grade near = grade_case(c, conventions{}, off.data(), mode);
+      CHECK(near.max_ulps == 1);
+      CHECK(near.worst_output == 2);
+      CHECK_FALSE(near.misclassified);
+    }
+}
+
 TEST_CASE("a flat view volume leaves only the entries dividing by its zero extent undefined", "[verify]") {
   // ortho with b = t = 1: row 1's scale 2/(t−b) and offset −(t+b)/(t−b) do not exist.
   const test_case c = make_case(operation::ortho, scalar_type::f64, {-1, 1, 1, 1, 1, 3});
@@ -365,4 +403,69 @@ TEST_CASE("the filtered oracle agrees exactly with the all-rational oracle", "[v
   CHECK(graded == 6 * 2 * 2 * 150 + 2 * 150);
   // The comparison is only meaningful if intervals decide most cases on their own.
   CHECK(counters.decided_by_intervals > 4 * counters.fell_back_to_rationals);
+}
+
+TEST_CASE("the dedicated float kernels agree exactly with the all-rational oracle", "[verify][oracle]") {
+  // Shadow matrix, shadow of a point and reflection matrix on float inputs take dedicated
+  // kernels in the filtered oracle; every class, several conventions, and outputs that are the
+  // float formula's result, one ulp off it, or (for points) the point itself and the light.
+  conventions along_rays;
+  along_rays.light = light_sign::along_rays;
+  conventions column_major;
+  column_major.storage = storage_order::column_major;
+  conventions clamped;
+  clamped.clamps_behind_receiver = true;
+  clamped.directional_only = true;
+  oracle_counters counters;
+  std::size_t graded = 0;
+  for (operation op : {operation::shadow_matrix, operation::shadow_point, operation::reflection_matrix})
+    for (const conventions conv : {conventions{}, along_rays, column_major, clamped}) {
+      if (conv.clamps_behind_receiver && op != operation::shadow_point) continue;
+      for (input_class cls : {input_class::regular, input_class::near_degenerate, input_class::degenerate}) {
+        const auto cases = generate_cases(op, scalar_type::f32, 400, 77 + static_cast<int>(op), cls, conv);
+        std::mt19937_64 rng(11);
+        for (const auto& c : cases) {
+          std::vector<double> out = float_outputs<float>(c);
+          const std::uint64_t pick = rng() % 6;
+          if (pick == 0)
+            for (double& x : out)
+              if (std::isfinite(x)) x = std::nextafter(static_cast<float>(x), -1e30f);
+          if (op == operation::shadow_point && pick == 1) out.assign(c.inputs.begin() + 8, c.inputs.end());
+          if (op == operation::shadow_point && pick == 2 && c.inputs[7] != 0)
+            for (std::size_t i = 0; i < 3; ++i) out[i] = static_cast<float>(c.inputs[4 + i] / c.inputs[7]);
+          const case_grade fast = grade_case(c, conv, out.data(), oracle_mode::filtered, &counters);
+          const case_grade slow = grade_case(c, conv, out.data(), oracle_mode::naive);
+          INFO("op " << to_string(op) << ", class " << to_string(cls) << ", case " << case_json_line(c));
+          require_same(fast, slow);
+          ++graded;
+        }
+      }
+    }
+  CHECK(graded == (3 * 3 + 1) * 3 * 400);
+  CHECK(counters.decided_by_intervals > 9 * counters.fell_back_to_rationals);
+}
+
+TEST_CASE("the double shadow-matrix kernel agrees exactly with the all-rational oracle", "[verify][oracle]") {
+  conventions column_major;
+  column_major.storage = storage_order::column_major;
+  oracle_counters counters;
+  std::size_t graded = 0;
+  for (const conventions conv : {conventions{}, column_major})
+    for (input_class cls : {input_class::regular, input_class::near_degenerate, input_class::degenerate}) {
+      const auto cases = generate_cases(operation::shadow_matrix, scalar_type::f64, 500, 91, cls, conv);
+      std::mt19937_64 rng(13);
+      for (const auto& c : cases) {
+        std::vector<double> out = float_outputs<double>(c);
+        if (rng() % 3 == 0)
+          for (double& x : out)
+            if (std::isfinite(x)) x = std::nextafter(x, -1e300);
+        const case_grade fast = grade_case(c, conv, out.data(), oracle_mode::filtered, &counters);
+        const case_grade slow = grade_case(c, conv, out.data(), oracle_mode::naive);
+        INFO("class " << to_string(cls) << ", case " << case_json_line(c));
+        require_same(fast, slow);
+        ++graded;
+      }
+    }
+  CHECK(graded == 2 * 3 * 500);
+  CHECK(counters.decided_by_intervals > 9 * counters.fell_back_to_rationals);
 }

@@ -52,6 +52,10 @@ nlohmann::json report_json(const fuzz_report& r) {
                      {"bits_before", f.bits_before},
                      {"bits_after", f.bits_after}};
     if (!f.relation.empty()) j["relation"] = f.relation;
+    if (f.kind == failure_kind::misclassified && f.original_grade.exact_class && f.original_grade.got_class) {
+      j["exact_class"] = std::string(to_string(*f.original_grade.exact_class));
+      j["got_class"] = std::string(to_string(*f.original_grade.got_class));
+    }
     doc["failures"].push_back(j);
   }
   return doc;
@@ -65,7 +69,11 @@ void print_text(std::ostream& out, const fuzz_report& r) {
     out << "  metamorphic " << relation << ": up to "
         << (ulps == UINT64_MAX ? std::string("non-finite vs finite") : std::to_string(ulps) + " ulps") << "\n";
   for (const auto& f : r.failures) {
-    out << "\n" << to_string(f.kind) << (f.relation.empty() ? "" : " (" + f.relation + ")") << " on " << f.family
+    std::string what = f.relation.empty() ? "" : " (" + f.relation + ")";
+    if (f.kind == failure_kind::misclassified && f.original_grade.exact_class && f.original_grade.got_class)
+      what = " (exact " + std::string(to_string(*f.original_grade.exact_class)) + ", float image " +
+             std::string(to_string(*f.original_grade.got_class)) + ")";
+    out << "\n" << to_string(f.kind) << what << " on " << f.family
         << ", " << f.bits << " bits of error; shrunk from " << f.bits_before << " to " << f.bits_after << " bits\n";
     out << "  original: " << case_json_line(f.original) << "\n";
     out << "  shrunk:   " << case_json_line(f.shrunk) << "\n";
