@@ -8,3 +8,4 @@ build="${1:-$root/build}"
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release
 cmake --build "$build" -j"$(nproc)" --target shadowproof_cli
 "$build/shadowproof" demo --svg "$build/demo-shadow.svg"
+"$build/shadowproof" check --impl all

@@ -277,21 +277,15 @@ fuzz_report run_fuzz(const implementation& impl, const fuzz_settings& settings,
     const case_grade grade = grade_case(c, impl.conv, out.data());
     const std::string family = base_family(g.family);
 
-    for (failure_kind kind : kinds_of(grade, settings.ulps_threshold)) {
-      ++report.failing_cases[std::string(to_string(kind))];
-      // Misclassifications are told apart by the pair of classes (shadow taken for an
-      // anti-shadow is a different bug from a shadow taken for a point on the receiver).
-      std::string key = std::string(to_string(kind)) + "/" + family;
-      if (kind == failure_kind::misclassified && grade.exact_class && grade.got_class)
-        key = "misclassified/" + std::string(to_string(*grade.exact_class)) + "->" + std::string(to_string(*grade.got_class));
-      if (!seen.insert(key).second) continue;
+    // Shrinks the case while `fails_on` holds for the simpler inputs and records the failure.
+    auto record = [&](failure_kind kind, const std::string& relation, double bits,
+                      const std::function<bool(const test_case&)>& fails_on) {
       auto still_fails = [&](const std::vector<double>& inputs) {
         test_case t = c;
         t.inputs = inputs;
         if (!valid_inputs(t)) return false;
         try {
-          const auto o = run(impl, t);
-          return same_failure(grade, grade_case(t, impl.conv, o.data()), kind, settings.ulps_threshold);
+          return fails_on(t);
         } catch (const error&) {
           return false;
         }
@@ -300,40 +294,6 @@ fuzz_report run_fuzz(const implementation& impl, const fuzz_settings& settings,
       fuzz_failure f;
       f.kind = kind;
       f.family = g.family;
-      f.original = c;
-      f.shrunk = c;
-      f.shrunk.inputs = s.inputs;
-      f.original_grade = grade;
-      const auto shrunk_out = run(impl, f.shrunk);
-      f.shrunk_grade = grade_case(f.shrunk, impl.conv, shrunk_out.data());
-      f.bits = grade.max_bits;
-      f.bits_before = s.bits_before;
-      f.bits_after = s.bits_after;
-      f.threshold = settings.ulps_threshold;
-      report.failures.push_back(std::move(f));
-    }
-
-    for (const auto& relation : relations) {
-      const auto v = metamorphic_violation(impl, c, relation, settings.ulps_threshold);
-      if (!v) continue;
-      report.metamorphic_max_ulps[relation] = std::max(report.metamorphic_max_ulps[relation], *v);
-      ++report.failing_cases["metamorphic"];
-      const std::string key = "metamorphic/" + family + "/" + relation;
-      if (!seen.insert(key).second) continue;
-      auto still_fails = [&](const std::vector<double>& inputs) {
-        test_case t = c;
-        t.inputs = inputs;
-        if (!valid_inputs(t)) return false;
-        try {
-          return metamorphic_violation(impl, t, relation, settings.ulps_threshold).has_value();
-        } catch (const error&) {
-          return false;
-        }
-      };
-      const auto s = shrink_inputs(c.inputs, single, still_fails, keep, settings.shrink_budget);
-      fuzz_failure f;
-      f.kind = failure_kind::metamorphic;
-      f.family = g.family;
       f.relation = relation;
       f.original = c;
       f.shrunk = c;
@@ -341,11 +301,37 @@ fuzz_report run_fuzz(const implementation& impl, const fuzz_settings& settings,
       f.original_grade = grade;
       const auto shrunk_out = run(impl, f.shrunk);
       f.shrunk_grade = grade_case(f.shrunk, impl.conv, shrunk_out.data());
-      f.bits = bits_of_error(*v == std::numeric_limits<std::uint64_t>::max() ? *v - 1 : *v);
+      f.bits = bits;
       f.bits_before = s.bits_before;
       f.bits_after = s.bits_after;
       f.threshold = settings.ulps_threshold;
       report.failures.push_back(std::move(f));
+    };
+
+    for (failure_kind kind : kinds_of(grade, settings.ulps_threshold)) {
+      ++report.failing_cases[std::string(to_string(kind))];
+      // Misclassifications are told apart by the pair of classes (shadow taken for an
+      // anti-shadow is a different bug from a shadow taken for a point on the receiver).
+      std::string key = std::string(to_string(kind)) + "/" + family;
+      if (kind == failure_kind::misclassified && grade.exact_class && grade.got_class)
+        key = "misclassified/" + std::string(to_string(*grade.exact_class)) + "->" + std::string(to_string(*grade.got_class));
+      if (!seen.insert(key).second) continue;
+      record(kind, "", grade.max_bits, [&](const test_case& t) {
+        const auto o = run(impl, t);
+        return same_failure(grade, grade_case(t, impl.conv, o.data()), kind, settings.ulps_threshold);
+      });
+    }
+
+    for (const auto& relation : relations) {
+      const auto v = metamorphic_violation(impl, c, relation, settings.ulps_threshold);
+      if (!v) continue;
+      report.metamorphic_max_ulps[relation] = std::max(report.metamorphic_max_ulps[relation], *v);
+      ++report.failing_cases["metamorphic"];
+      if (!seen.insert("metamorphic/" + family + "/" + relation).second) continue;
+      record(failure_kind::metamorphic, relation,
+             bits_of_error(*v == std::numeric_limits<std::uint64_t>::max() ? *v - 1 : *v), [&](const test_case& t) {
+               return metamorphic_violation(impl, t, relation, settings.ulps_threshold).has_value();
+             });
     }
   }
   if (progress) progress(report.cases, report.failures.size());

@@ -508,10 +508,11 @@ bool grade_fast(const test_case& c, const conventions& conv, const double* got, 
 case_grade grade_case(const test_case& c, const conventions& conv, const double* outputs,
                       oracle_mode mode, oracle_counters* counters) {
   if (mode == oracle_mode::filtered) {
-    case_grade g;
-    if (c.type == scalar_type::f32 ? grade_fast<float>(c, conv, outputs, g) : grade_fast<double>(c, conv, outputs, g)) {
+    case_grade fast;
+    if (c.type == scalar_type::f32 ? grade_fast<float>(c, conv, outputs, fast)
+                                   : grade_fast<double>(c, conv, outputs, fast)) {
       if (counters) ++counters->decided_by_intervals;
-      return g;
+      return fast;
     }
     try {
       case_grade g = c.type == scalar_type::f32 ? grade_with<ival32, float>(c, conv, outputs)

@@ -401,9 +401,10 @@ struct rounded_sum {
   }
 };
 
-// Exact sum of exact terms correctly rounded to double: y + r = hi + lo exactly, and y is the
-// correct rounding when the exact sum is strictly closer to y than half the gap to either
-// neighbour of y (at least |y| 2^-54).
+// Exact sum of exact terms correctly rounded to double: y + r = hi + lo exactly, the exact sum
+// is within lo_bound of that, and y is its correct rounding when the whole range lies strictly
+// inside half the gap to y's neighbour on each side (gaps halve below a power of two; halving
+// is exact, so a sum exactly at a midpoint is never decided here).
 bool round_to_double(const accumulator& acc, double& out) {
   if (acc.exact()) {
     out = acc.hi == 0 ? 0.0 : acc.hi;
@@ -411,7 +412,13 @@ bool round_to_double(const accumulator& acc, double& out) {
   }
   double y, r;
   two_sum(acc.hi, acc.lo, y, r);
-  if (!(std::fabs(r) + acc.lo_bound() < std::fabs(y) * 0x1p-54 * (1 - 0x1p-40))) return false;
+  if (y == 0 || !std::isfinite(y)) return false;
+  const double magnitude = std::fabs(y);
+  const double outward = y > 0 ? r : -r;  // r measured away from zero
+  const double bound = acc.lo_bound();
+  const double half_up = (std::nextafter(magnitude, INFINITY) - magnitude) / 2;
+  const double half_down = (magnitude - std::nextafter(magnitude, 0.0)) / 2;
+  if (!(outward + bound < half_up && bound - outward < half_down)) return false;
   out = y;
   return true;
 }

@@ -31,26 +31,14 @@ int run_reflect(const reflect_options& o, const global_options& g) {
     nlohmann::json doc;
     doc["matrix"] = exact_json(M);
     doc["points"] = nlohmann::json::array();
-    for (const auto& V : points) {
-      const vec4<rational> image = M * V;
-      doc["points"].push_back({{"input", exact_json(std::vector<rational>{V[0], V[1], V[2]})},
-                               {"image", exact_json(image)},
-                               {"affine", exact_json(*affine_part(image))},
-                               {"class", side_of(P, V)}});
-    }
+    for (const auto& V : points) doc["points"].push_back(point_json(V, M * V, side_of(P, V)));
     std::cout << doc.dump(2) << '\n';
     return 0;
   }
   std::cout << "mirror plane P = " << exact_tuple(P.p) << "\n"
             << "reflection matrix M = [I - 2nnᵀ/(n·n), -2dn/(n·n); 0 0 0 1] (image = M V):\n";
   print_matrix(std::cout, M);
-  for (const auto& V : points) {
-    const vec4<rational> image = M * V;
-    std::cout << "point " << exact_tuple(std::vector<rational>{V[0], V[1], V[2]}) << ":\n"
-              << "  class  " << side_of(P, V) << "\n"
-              << "  image  " << exact_tuple(image) << "\n"
-              << "  affine " << exact_tuple(*affine_part(image)) << "\n";
-  }
+  for (const auto& V : points) print_point(std::cout, V, M * V, side_of(P, V));
   return 0;
 }
 

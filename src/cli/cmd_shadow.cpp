@@ -33,14 +33,8 @@ int run_shadow(const shadow_options& o, const global_options& g) {
     nlohmann::json doc;
     doc["matrix"] = exact_json(M);
     doc["points"] = nlohmann::json::array();
-    for (const auto& V : points) {
-      const vec4<rational> image = M * V;
-      const auto affine = affine_part(image);
-      doc["points"].push_back({{"input", exact_json(std::vector<rational>{V[0], V[1], V[2]})},
-                               {"image", exact_json(image)},
-                               {"affine", affine ? exact_json(*affine) : nlohmann::json(nullptr)},
-                               {"class", std::string(to_string(classify_point(P, L, V)))}});
-    }
+    for (const auto& V : points)
+      doc["points"].push_back(point_json(V, M * V, to_string(classify_point(P, L, V))));
     std::cout << doc.dump(2) << '\n';
     return 0;
   }
@@ -49,14 +43,7 @@ int run_shadow(const shadow_options& o, const global_options& g) {
             << "P·L = " << to_string(dot(P.p, L.l)) << "\n"
             << "shadow matrix M = (P·L) I - L Pᵀ (image = M V):\n";
   print_matrix(std::cout, M);
-  for (const auto& V : points) {
-    const vec4<rational> image = M * V;
-    const auto affine = affine_part(image);
-    std::cout << "point " << exact_tuple(std::vector<rational>{V[0], V[1], V[2]}) << ":\n"
-              << "  class  " << to_string(classify_point(P, L, V)) << "\n"
-              << "  image  " << exact_tuple(image) << "\n"
-              << "  affine " << (affine ? exact_tuple(*affine) : std::string("none (w = 0)")) << "\n";
-  }
+  for (const auto& V : points) print_point(std::cout, V, M * V, to_string(classify_point(P, L, V)));
   return 0;
 }
 

@@ -49,6 +49,22 @@ std::optional<std::vector<rational>> affine_part(const vec4<rational>& v) {
   return std::vector<rational>{v[0] / v[3], v[1] / v[3], v[2] / v[3]};
 }
 
+nlohmann::json point_json(const vec4<rational>& V, const vec4<rational>& image, std::string_view cls) {
+  const auto affine = affine_part(image);
+  return {{"input", exact_json(std::vector<rational>{V[0], V[1], V[2]})},
+          {"image", exact_json(image)},
+          {"affine", affine ? exact_json(*affine) : nlohmann::json(nullptr)},
+          {"class", std::string(cls)}};
+}
+
+void print_point(std::ostream& out, const vec4<rational>& V, const vec4<rational>& image, std::string_view cls) {
+  const auto affine = affine_part(image);
+  out << "point " << exact_tuple(std::vector<rational>{V[0], V[1], V[2]}) << ":\n"
+      << "  class  " << cls << "\n"
+      << "  image  " << exact_tuple(image) << "\n"
+      << "  affine " << (affine ? exact_tuple(*affine) : std::string("none (w = 0)")) << "\n";
+}
+
 std::vector<vec4<rational>> parse_points(const std::vector<std::string>& texts, const number_limits& limits) {
   std::vector<vec4<rational>> points;
   for (const auto& t : texts) {

@@ -5,6 +5,7 @@
 #include <optional>
 #include <ostream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "shadowproof/homogeneous.h"
@@ -26,6 +27,12 @@ std::string exact_tuple(const vec4<rational>& v);
 
 /// Affine image (x/w, y/w, z/w) of a homogeneous vector, or nothing when w = 0.
 std::optional<std::vector<rational>> affine_part(const vec4<rational>& v);
+
+/// {"input": [x,y,z], "image": [x,y,z,w], "affine": [x,y,z] or null, "class": cls}.
+nlohmann::json point_json(const vec4<rational>& V, const vec4<rational>& image, std::string_view cls);
+
+/// The same as text: "point (x, y, z):" then its class, image and affine image.
+void print_point(std::ostream& out, const vec4<rational>& V, const vec4<rational>& image, std::string_view cls);
 
 /// Parses every --point "x,y,z" into the finite point (x, y, z, 1).
 std::vector<vec4<rational>> parse_points(const std::vector<std::string>& texts, const number_limits& limits);
