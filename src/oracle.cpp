@@ -462,7 +462,8 @@ case_grade grade_with(const test_case& c, const conventions& conv, const double*
 }
 
 // The dedicated kernels (oracle_fast.h): shadow-matrix, shadow-point and reflection-matrix for
-// float cases, shadow-matrix for double cases; false when they do not cover or decide the case.
+// float cases, shadow-matrix and shadow-point for double cases; false when they do not cover or
+// decide the case.
 template <class F>
 bool grade_fast(const test_case& c, const conventions& conv, const double* got, case_grade& out) {
   if (c.op != operation::shadow_matrix && c.op != operation::shadow_point && c.op != operation::reflection_matrix)
@@ -483,12 +484,16 @@ bool grade_fast(const test_case& c, const conventions& conv, const double* got, 
     r.defined[j] = fast.defined;
   }
   grade_outputs<F>(out, c, fast.count, got, r);
-  if (std::is_same_v<F, float> && c.op == operation::shadow_point) {  // the kernels' image tests are f32 only
+  if (c.op == operation::shadow_point) {
     const double* in = c.inputs.data();
+    using ival = std::conditional_t<std::is_same_v<F, float>, ival32, ival64>;
     image_class got_class;
-    if (!detail::fast_image_class_f32(in, conv, got, got_class)) {
+    bool decided = false;
+    if constexpr (std::is_same_v<F, float>) decided = detail::fast_image_class_f32(in, conv, got, got_class);
+    else decided = detail::fast_image_class_f64(in, conv, got, got_class);
+    if (!decided) {
       try {
-        got_class = classify_image<ival32>(c, conv, got);
+        got_class = classify_image<ival>(c, conv, got);
       } catch (const detail::undecided&) {
         got_class = classify_image<rational>(c, conv, got);
       }
@@ -496,7 +501,9 @@ bool grade_fast(const test_case& c, const conventions& conv, const double* got, 
     std::optional<double> value;
     if (got_class != image_class::nonfinite) {
       double v;
-      value = detail::fast_plane_value_f32(in, got, v) ? v : plane_value<ival32>(in, got);
+      const bool fast_value = std::is_same_v<F, float> ? detail::fast_plane_value_f32(in, got, v)
+                                                       : detail::fast_plane_value_f64(in, got, v);
+      value = fast_value ? v : plane_value<ival>(in, got);
     }
     set_point_class(out, r, conv, got_class, value);
   }

@@ -4,6 +4,8 @@
 #include "oracle_fast.h"
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 
 namespace shadowproof::detail {
@@ -173,7 +175,8 @@ struct denominator {
 };
 
 // The exact quotient num / den rounded to float.
-[[gnu::always_inline]] inline bool round_quotient_to_float(double yn, double en, const denominator& den, double& out) {
+[[gnu::always_inline]] inline bool round_quotient_to_float(double yn, double en, const denominator& den,
+                                                           double& out) {
   if (!den.usable) return false;
   if (en == 0 && yn == 0) {
     out = 0;
@@ -184,7 +187,8 @@ struct denominator {
   // is yn/yd (1 + δ), |δ| ≤ 2u + u²; so |num/den − q| ≤ |q| (2u + (a + b)/(1 − b)) (1 + 3u).
   const double q = yn * den.inverse;
   if (!std::isfinite(q)) return false;
-  const double relative = en == 0 ? den.exact_numerator : (2 * u + (en / std::fabs(yn) + den.b) * (1 + 0x1p-18)) * (1 + 0x1p-30);
+  const double relative =
+      en == 0 ? den.exact_numerator : (2 * u + (en / std::fabs(yn) + den.b) * (1 + 0x1p-18)) * (1 + 0x1p-30);
   if (round_to_float_relative(q, relative, out)) return true;
   if (en == 0 && den.ed == 0) {  // both exact: is the quotient a double (e.g. a float midpoint)?
     const double qd = yn / den.yd;
@@ -306,8 +310,8 @@ bool shadow_point_quick_f32(const double* P, const double* L, const double* V3, 
     // N_i = s V_i − t L_i from the approximate s and t, each product and the difference
     // rounded once.
     const double a = s * V3[i], b = t * L[i], n = a - b;
-    const double en =
-        (std::fabs(V3[i]) * es + std::fabs(L[i]) * et + u * (std::fabs(a) + std::fabs(b) + std::fabs(n))) * inflate;
+    const double rounding = u * (std::fabs(a) + std::fabs(b) + std::fabs(n));
+    const double en = (std::fabs(V3[i]) * es + std::fabs(L[i]) * et + rounding) * inflate;
     if (!round_quotient_to_float(n, en, den, out.value[i])) return false;
   }
   return true;
@@ -405,22 +409,77 @@ struct rounded_sum {
 // is within lo_bound of that, and y is its correct rounding when the whole range lies strictly
 // inside half the gap to y's neighbour on each side (gaps halve below a power of two; halving
 // is exact, so a sum exactly at a midpoint is never decided here).
+// hi + lo ± bound correctly rounded to double: (y, r) = TwoSum(hi, lo), and y is the correct
+// rounding when the whole range lies strictly inside half the gap to y's neighbour on each side
+// (gaps halve below a power of two; halving is exact, so a midpoint is never decided here).
+bool round_pair_to_double(double hi, double lo, double bound, double& out) {
+  double y, r;
+  two_sum(hi, lo, y, r);
+  if (y == 0 || !std::isfinite(y) || !(bound >= 0)) return false;
+  const double magnitude = std::fabs(y);
+  const double outward = y > 0 ? r : -r;  // r measured away from zero
+  // Neighbours of a positive finite double: its bit pattern ± 1 (as std::nextafter, cheaper).
+  std::uint64_t bits;
+  std::memcpy(&bits, &magnitude, sizeof bits);
+  double above, below;
+  const std::uint64_t bits_above = bits + 1, bits_below = bits - 1;
+  std::memcpy(&above, &bits_above, sizeof above);
+  std::memcpy(&below, &bits_below, sizeof below);
+  const double half_up = (above - magnitude) / 2;
+  const double half_down = (magnitude - below) / 2;
+  if (!(outward + bound < half_up && bound - outward < half_down)) return false;
+  out = y;
+  return true;
+}
+
+// An exact sum of exact terms correctly rounded to double.
 bool round_to_double(const accumulator& acc, double& out) {
   if (acc.exact()) {
     out = acc.hi == 0 ? 0.0 : acc.hi;
     return true;
   }
-  double y, r;
-  two_sum(acc.hi, acc.lo, y, r);
-  if (y == 0 || !std::isfinite(y)) return false;
-  const double magnitude = std::fabs(y);
-  const double outward = y > 0 ? r : -r;  // r measured away from zero
-  const double bound = acc.lo_bound();
-  const double half_up = (std::nextafter(magnitude, INFINITY) - magnitude) / 2;
-  const double half_down = (magnitude - std::nextafter(magnitude, 0.0)) / 2;
-  if (!(outward + bound < half_up && bound - outward < half_down)) return false;
-  out = y;
-  return true;
+  return round_pair_to_double(acc.hi, acc.lo, acc.lo_bound(), out);
+}
+
+// Shewchuk's grow-expansion with zero elimination: e[0..m) nonoverlapping, increasing in
+// magnitude, summing exactly to the n ≤ 16 terms. Returns m.
+int expansion(const double* terms, int n, double* e) {
+  int m = 0;
+  for (int t = 0; t < n; ++t) {
+    double q = terms[t];
+    int k = 0;
+    for (int i = 0; i < m; ++i) {
+      double sum, err;
+      two_sum(q, e[i], sum, err);
+      q = sum;
+      if (err != 0) e[k++] = err;
+    }
+    if (q != 0) e[k++] = q;
+    m = k;
+  }
+  return m;
+}
+
+// The exact sum of n ≤ 16 exact doubles correctly rounded to double, from Shewchuk's
+// nonoverlapping expansion (grow-expansion with zero elimination): exact zeros and sums that
+// need more than a double-double are decided here too. Its sign is the sum's exact sign.
+bool round_to_double_exact(const double* terms, int n, double& out) {
+  if (n > 16) return false;
+  double e[16];
+  const int m = expansion(terms, n, e);
+  if (m == 0) {
+    out = 0;
+    return true;
+  }
+  if (m <= 2) {  // the sum of two doubles, rounded once by the addition itself
+    const double y = m == 1 ? e[0] : e[1] + e[0];
+    out = y == 0 ? 0.0 : y;
+    return std::isfinite(y);
+  }
+  accumulator acc;
+  acc.add(e[m - 1]);
+  for (int i = m - 2; i >= 0; --i) acc.add(e[i]);
+  return round_to_double(acc, out);
 }
 
 // Doubles whose products (and Dekker's split of them) neither overflow nor underflow.
@@ -444,23 +503,220 @@ bool shadow_matrix_f64(const double* P, const double* L, fast_reference& out) {
         continue;
       }
       accumulator acc;
+      double terms[6];
+      int n = 0;
       for (int j = 0; j < 4; ++j)
         if (j != r) {
           acc.add(p[j]);
           acc.add(e[j]);
+          terms[n++] = p[j];
+          terms[n++] = e[j];
         }
-      if (!round_to_double(acc, v)) return false;
+      if (!round_to_double(acc, v) && !round_to_double_exact(terms, n, v)) return false;
     }
   return true;
 }
 
+// An exact sum as hi + lo within ± bound, hi and lo its two largest expansion components (so
+// the bound is below 2^-100 of the sum), and its exact sign.
+struct exact_pair {
+  double hi = 0, lo = 0, bound = 0;
+  int sign = 0;
+  exact_pair(const double* terms, int n) {
+    double e[16];
+    const int m = expansion(terms, n, e);
+    if (m == 0) return;
+    hi = e[m - 1];
+    lo = m >= 2 ? e[m - 2] : 0;
+    for (int i = 0; i + 2 < m; ++i) bound += std::fabs(e[i]);
+    bound *= inflate;
+    sign = hi > 0 ? 1 : -1;
+  }
+};
+
+// x · f for doubles x and f, added exactly as Dekker's two terms.
+void add_product_exact(accumulator& acc, double x, double f) {
+  double p, e;
+  two_product(x, f, p, e);
+  acc.add(p);
+  acc.add(e);
+}
+
+// The exact quotient num / den correctly rounded to double, num within num.hi + num.lo ±
+// n_bound, den = den.hi (1 + β) with |β| ≤ b: q1 = num.hi / den.hi, the remainder
+// num − q1 den from Dekker products, and num/den = q1 + rem/den to double-double accuracy.
+bool round_quotient_to_double(const exact_pair& num, double n_bound, const exact_pair& den, double b, double& out) {
+  const double q1 = num.hi / den.hi;
+  if (!(q1 != 0 && std::fabs(q1) > 0x1p-150 && std::fabs(q1) < 0x1p150)) return false;
+  accumulator rem;
+  rem.add(num.hi);
+  rem.add(num.lo);
+  add_product_exact(rem, -q1, den.hi);
+  add_product_exact(rem, -q1, den.lo);
+  double ry, re;
+  rem.value(ry, re);
+  re = (re + n_bound + std::fabs(q1) * den.bound) * inflate;
+  // q2 = ry / den.hi rounded once; |rem/den − q2| ≤ |q2| (1 + 2u) (b (1 + 2b) + u) + re (1 + 2b) / |den.hi|.
+  const double q2 = ry / den.hi;
+  const double bound =
+      ((std::fabs(q2) * (1 + 2 * u)) * (b * (1 + 2 * b) + u) + re / std::fabs(den.hi) * (1 + 2 * b)) * inflate + tiny;
+  return round_pair_to_double(q1, q2, bound, out);
+}
+
+// f64 reflection: entry (i, j) is (δ_ij |n|² − 2 n_i n_j) / |n|², numerator and denominator exact
+// expansions of Dekker products, the quotient as above.
+bool reflection_matrix_f64(const double* P, fast_reference& out) {
+  for (int i = 0; i < 4; ++i)
+    if (!(P[i] == 0 || (std::fabs(P[i]) > 0x1p-150 && std::fabs(P[i]) < 0x1p150))) return false;
+  out.count = 16;
+  double sq[3][2];
+  double nterms[6];
+  for (int k = 0; k < 3; ++k) {
+    two_product(P[k], P[k], sq[k][0], sq[k][1]);
+    nterms[2 * k] = sq[k][0];
+    nterms[2 * k + 1] = sq[k][1];
+  }
+  const exact_pair nn(nterms, 6);
+  if (nn.sign <= 0) return false;
+  const double b = (std::fabs(nn.lo) + nn.bound) / nn.hi * inflate;
+  if (!(b < 0x1p-20)) return false;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 4; ++j) {
+      double& v = out.value[i * 4 + j];
+      if (j < i) {  // symmetric
+        v = out.value[j * 4 + i];
+        continue;
+      }
+      double terms[6];
+      int n = 0;
+      if (i == j) {
+        for (int k = 0; k < 3; ++k) {
+          const double sign = k == i ? -1 : 1;
+          terms[n++] = sign * sq[k][0];
+          terms[n++] = sign * sq[k][1];
+        }
+      } else {
+        two_product(-2 * P[i], P[j], terms[0], terms[1]);
+        n = 2;
+      }
+      const exact_pair num(terms, n);
+      if (num.sign == 0) {
+        v = 0;
+        continue;
+      }
+      if (!round_quotient_to_double(num, 0, nn, b, v)) return false;
+    }
+  out.value[12] = out.value[13] = out.value[14] = 0;
+  out.value[15] = 1;
+  return true;
+}
+
+// f64 image of V = (x, y, z, 1) for w ∈ {0, 1} (the lights the generators make; others go to
+// the generic oracle): s = P·L and t = P·V are exact sums of Dekker products, D = s − w t is
+// their exact difference, N_i = s V_i − t L_i the double-double s and t times V_i and L_i (again
+// Dekker products) plus their bounds, and N_i / D is q1 + rem / D with q1 = N.hi / D.hi and the
+// remainder N − q1 D from Dekker products again: a double-double quotient with a bound, rounded
+// to double by the half-gap test.
+bool shadow_point_f64(const double* P, const double* L, const double* V3, const conventions& conv,
+                      fast_reference& out) {
+  auto modest = [](double x) { return x == 0 || (std::fabs(x) > 0x1p-150 && std::fabs(x) < 0x1p150); };
+  for (int i = 0; i < 4; ++i)
+    if (!modest(P[i]) || !modest(L[i])) return false;
+  for (int i = 0; i < 3; ++i)
+    if (!modest(V3[i])) return false;
+  const double w = L[3];
+  if (w != 0 && w != 1) return false;
+  out.count = 3;
+  const double V[4] = {V3[0], V3[1], V3[2], 1};
+  double sterms[8], tterms[8], dterms[16];
+  int nd = 0;
+  for (int j = 0; j < 4; ++j) {
+    two_product(P[j], L[j], sterms[2 * j], sterms[2 * j + 1]);
+    two_product(P[j], V[j], tterms[2 * j], tterms[2 * j + 1]);
+  }
+  for (int k = 0; k < 8; ++k) {
+    dterms[nd++] = sterms[k];
+    if (w != 0) dterms[nd++] = -tterms[k];
+  }
+  // Exact expansions: near-degenerate cases cancel s, t or D far below what a double-double
+  // accumulator's bound can resolve.
+  const exact_pair s(sterms, 8), t(tterms, 8), D(dterms, nd);
+  const int ss = s.sign, ts = t.sign, ds = D.sign;
+  const bool directional = w == 0;
+  if (ts == 0) {  // a point on the receiver is its own image (see shadow_point_f32)
+    out.cls = ss == 0 ? point_class::line_in_plane : point_class::on_receiver;
+    for (int i = 0; i < 3; ++i) out.value[i] = V[i] == 0 ? 0.0 : V[i];
+    return true;
+  }
+  if (ss == 0) {
+    out.cls = directional ? point_class::light_parallel : point_class::light_on_plane;
+  } else if (directional) {
+    out.cls = ts == ss ? point_class::shadow : point_class::behind_receiver;
+  } else if (V[0] == L[0] && V[1] == L[1] && V[2] == L[2]) {  // w = 1
+    out.cls = point_class::at_light;
+  } else if (ds == 0) {
+    out.cls = point_class::at_infinity;
+  } else if (ts != ss) {
+    out.cls = point_class::behind_receiver;
+  } else {
+    out.cls = ds == ss ? point_class::shadow : point_class::beyond_light;
+  }
+  if (conv.clamps_behind_receiver && *out.cls == point_class::behind_receiver) {
+    for (int i = 0; i < 3; ++i) out.value[i] = V[i] == 0 ? 0.0 : V[i];
+    return true;
+  }
+  if (ds == 0) {
+    out.defined = false;
+    out.value[0] = out.value[1] = out.value[2] = 0;
+    return true;
+  }
+  const double d_bound = D.bound;
+  // D = D.hi (1 + β) with |β| ≤ b.
+  const double b = (std::fabs(D.lo) + d_bound) / std::fabs(D.hi) * inflate;
+  if (!(b < 0x1p-20)) return false;
+  for (int i = 0; i < 3; ++i) {
+    // N_i = s V_i − t L_i: the pairs of s and t times V_i and L_i, exactly, plus their bounds.
+    double nterms[16];
+    two_product(s.hi, V[i], nterms[0], nterms[1]);
+    two_product(s.lo, V[i], nterms[2], nterms[3]);
+    two_product(-t.hi, L[i], nterms[4], nterms[5]);
+    two_product(-t.lo, L[i], nterms[6], nterms[7]);
+    const exact_pair N(nterms, 8);
+    const double n_bound = (N.bound + (std::fabs(V[i]) * s.bound + std::fabs(L[i]) * t.bound) * inflate) * inflate;
+    if (N.sign == 0 && n_bound == 0) {
+      out.value[i] = 0;
+      continue;
+    }
+    if (!round_quotient_to_double(N, n_bound, D, b, out.value[i])) return false;
+  }
+  return true;
+}
+
+bool image_class_of(const double* in, const conventions& conv, const double* got, image_class& out);
+
 }  // namespace
 
 bool fast_reference_f64(operation op, const double* in, const conventions& conv, fast_reference& out) {
-  if (op != operation::shadow_matrix) return false;
+  if (op == operation::reflection_matrix) return reflection_matrix_f64(in, out);
+  if (op != operation::shadow_matrix && op != operation::shadow_point) return false;
   double L[4];
   canonical_light(in + 4, conv, L);
+  if (op == operation::shadow_point) return shadow_point_f64(in, L, in + 8, conv, out);
   return shadow_matrix_f64(in, L, out);
+}
+
+bool fast_plane_value_f64(const double* in, const double* got, double& out) {
+  double terms[7];
+  for (int i = 0; i < 3; ++i) {
+    if (!moderate(got[i])) return false;
+    two_product(in[i], got[i], terms[2 * i], terms[2 * i + 1]);
+  }
+  for (int i = 0; i < 4; ++i)
+    if (!moderate(in[i])) return false;
+  terms[6] = in[3];
+  accumulator acc;
+  for (double x : terms) acc.add(x);
+  return round_to_double(acc, out) || round_to_double_exact(terms, 7, out);
 }
 
 bool fast_reference_f32(operation op, const double* in, const conventions& conv, fast_reference& out) {
@@ -490,6 +746,26 @@ bool fast_image_class_f32(const double* in, const conventions& conv, const doubl
     }
     if (!is_float(got[i])) return false;
   }
+  return image_class_of(in, conv, got, out);
+}
+
+bool fast_image_class_f64(const double* in, const conventions& conv, const double* got, image_class& out) {
+  for (int i = 0; i < 3; ++i)
+    if (!std::isfinite(got[i])) {
+      out = image_class::nonfinite;
+      return true;
+    }
+  // w V_i and w G_i must stay exact (w ∈ {0, 1}), products far from under- and overflow.
+  if (in[7] != 0 && in[7] != 1) return false;
+  for (int i = 0; i < 11; ++i)
+    if (!moderate(in[i]) || (i < 3 && !moderate(got[i]))) return false;
+  return image_class_of(in, conv, got, out);
+}
+
+namespace {
+
+// The class of a finite image whose products w V_i and w G_i are exact doubles.
+bool image_class_of(const double* in, const conventions& conv, const double* got, image_class& out) {
   double L[4];
   canonical_light(in + 4, conv, L);
   const double* V = in + 8;
@@ -553,13 +829,15 @@ bool fast_image_class_f32(const double* in, const conventions& conv, const doubl
   return true;
 }
 
+}  // namespace
+
 bool fast_plane_value_f32(const double* in, const double* got, double& out) {
   for (int i = 0; i < 3; ++i)
     if (!is_float(got[i])) return false;
+  const double terms[4] = {in[0] * got[0], in[1] * got[1], in[2] * got[2], in[3]};
   accumulator acc;
-  for (int i = 0; i < 3; ++i) acc.add(in[i] * got[i]);
-  acc.add(in[3]);
-  return round_to_double(acc, out);
+  for (double t : terms) acc.add(t);
+  return round_to_double(acc, out) || round_to_double_exact(terms, 4, out);
 }
 
 }  // namespace shadowproof::detail

@@ -28,17 +28,25 @@ struct fast_reference {
 /// float. False when an operation is not covered or a rounding or sign is undecided.
 bool fast_reference_f32(operation op, const double* inputs, const conventions& conv, fast_reference& out);
 
-/// The canonical exact outputs of an f64 shadow-matrix case, correctly rounded to double (the
-/// only f64 operation with a dedicated kernel); false for other operations, inputs beyond
-/// 2^±400 in magnitude, or an undecided rounding.
+/// The canonical exact outputs of an f64 shadow-matrix or shadow-point case, correctly rounded
+/// to double; false for other operations, inputs of extreme magnitude (beyond 2^±400 for the
+/// matrix, 2^±150 for the point), lights with w ∉ {0, 1}, or an undecided rounding.
 bool fast_reference_f64(operation op, const double* inputs, const conventions& conv, fast_reference& out);
 
-/// Class of the float image `got` of a shadow-point f32 case for a directional light (see
-/// image_class); false for a point light, a non-float output or an undecided sign.
+/// Class of the float image `got` of a shadow-point f32 case (see image_class); false for a
+/// non-float output or an undecided sign.
 bool fast_image_class_f32(const double* inputs, const conventions& conv, const double* got, image_class& out);
+
+/// Class of the double image `got` of a shadow-point f64 case (see image_class); false for a
+/// light with w ∉ {0, 1}, values beyond 2^±400 in magnitude or an undecided sign.
+bool fast_image_class_f64(const double* inputs, const conventions& conv, const double* got, image_class& out);
 
 /// P·(got, 1) correctly rounded to double for f32 inputs and float outputs; false when the
 /// outputs are not floats or the rounding is undecided.
 bool fast_plane_value_f32(const double* inputs, const double* got, double& out);
+
+/// P·(got, 1) correctly rounded to double for f64 inputs and outputs; false when an input or
+/// output is beyond 2^±400 in magnitude or the rounding is undecided.
+bool fast_plane_value_f64(const double* inputs, const double* got, double& out);
 
 }  // namespace shadowproof::detail
