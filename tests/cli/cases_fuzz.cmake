@@ -10,3 +10,6 @@ shadowproof_cli_case(NAME "fuzz finds a loss of over 2^20 ulps next to a paralle
 shadowproof_cli_case(NAME "fuzz refuses an operation it has no generator for"
   ARGS fuzz --impl glm-frustum-f32 --cases 100 --seed 1 EXPECT_CODE 2 STDERR_REGEX "fuzz.unsupported_operation")
 shadowproof_cli_case(NAME "fuzz needs a budget" ARGS fuzz --impl seed003-ray-f32 EXPECT_CODE 2 STDERR_REGEX "--seconds S or --cases N")
+shadowproof_cli_case(NAME "fuzz finds the shadow matrix's float image on the wrong side of the light"
+  ARGS fuzz --impl homogeneous-image-f32 --cases 20000 --seed 4 --json EXPECT_CODE 1
+  STDOUT_REGEX "\"exact_class\": \"shadow\",[^}]*\"family\": \"vertex_at_light_height[^\"]*\",[^}]*\"got_class\": \"beyond_light\"")
