@@ -74,3 +74,18 @@ TEST_CASE("fuzz regression: homogeneous-image-f32 misclassified on vertex_at_lig
   CHECK(shadowproof::to_string(*g.got_class) == "beyond_light");
 }
 
+// seed001-shader-f32: nonfinite on a light_parallel case, shrunk from 28 to 16 bits.
+TEST_CASE("fuzz regression: seed001-shader-f32 nonfinite on light_parallel", "[fuzz][regression]") {
+  const auto& all = shadowproof::builtin_implementations();
+  const auto impl = std::find_if(all.begin(), all.end(), [](const shadowproof::implementation& i) { return i.name == "seed001-shader-f32"; });
+  REQUIRE(impl != all.end());
+  shadowproof::test_case c;
+  c.op = shadowproof::operation_from_string("shadow-point").value();
+  c.type = shadowproof::scalar_type_from_string("f32").value();
+  c.inputs = {-0x0p+0, 0x1.4p+3, -0x0p+0, -0x1.4p+4, -0x0p+0, 0x0p+0, 0x1p+0, 0x0p+0, 0x0p+0, 0x1p+1, 0x0p+0};
+  std::vector<double> out(shadowproof::signature(c.op).output_count);
+  impl->run(c.inputs.data(), out.data());
+  const auto g = shadowproof::grade_case(c, impl->conv, out.data());
+  CHECK(g.nonfinite > 0);
+}
+

@@ -13,3 +13,6 @@ shadowproof_cli_case(NAME "fuzz needs a budget" ARGS fuzz --impl seed003-ray-f32
 shadowproof_cli_case(NAME "fuzz finds the shadow matrix's float image on the wrong side of the light"
   ARGS fuzz --impl homogeneous-image-f32 --cases 20000 --seed 4 --json EXPECT_CODE 1
   STDOUT_REGEX "\"exact_class\": \"shadow\",[^}]*\"family\": \"vertex_at_light_height[^\"]*\",[^}]*\"got_class\": \"beyond_light\"")
+shadowproof_cli_case(NAME "fuzz finds NaN from seed 001's shader under an exactly parallel light"
+  ARGS fuzz --impl seed001-shader-f32 --cases 100 --seed 1 --json EXPECT_CODE 1
+  STDOUT_REGEX "\"family\": \"light_parallel[^\"]*\",[^}]*\"kind\": \"nonfinite\"")
