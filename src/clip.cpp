@@ -27,7 +27,7 @@ namespace {
 
 // The exact kernel. Epeck (lazy exact with interval filters) was measured against
 // Cartesian<mpq_class> on the 10k-triangle sphere benchmark and is faster (see
-// docs/readme/clipping.md); SHADOWPROOF_CLIP_CARTESIAN_GMPQ switches to the other one.
+// the README's clipping section); SHADOWPROOF_CLIP_CARTESIAN_GMPQ switches to the other one.
 #ifdef SHADOWPROOF_CLIP_CARTESIAN_GMPQ
 using kernel = CGAL::Cartesian<mpq_class>;
 #else
