@@ -346,22 +346,14 @@ std::string catch2_regression_test(const implementation& impl, const fuzz_failur
     << " bits.\n";
   s << "TEST_CASE(\"fuzz regression: " << impl.name << " " << to_string(f.kind)
     << (f.relation.empty() ? "" : " " + f.relation) << " on " << base_family(f.family) << "\", \"[fuzz][regression]\") {\n";
-  s << "  const auto& all = shadowproof::builtin_implementations();\n"
-    << "  const auto impl = std::find_if(all.begin(), all.end(), [](const shadowproof::implementation& i) { return i.name == \""
-    << impl.name << "\"; });\n"
-    << "  REQUIRE(impl != all.end());\n"
-    << "  shadowproof::test_case c;\n"
-    << "  c.op = shadowproof::operation_from_string(\"" << to_string(c.op) << "\").value();\n"
-    << "  c.type = shadowproof::scalar_type_from_string(\"" << to_string(c.type) << "\").value();\n"
-    << "  c.inputs = {";
+  s << "  const auto& impl = shadowproof::find_builtin_implementation(\"" << impl.name << "\");\n"
+    << "  const shadowproof::test_case c{0, impl.op, impl.type, shadowproof::input_class::regular, {";
   for (std::size_t i = 0; i < c.inputs.size(); ++i) s << (i ? ", " : "") << hex_string(c.inputs[i]);
-  s << "};\n";
+  s << "}};\n";
   if (f.kind == failure_kind::metamorphic) {
-    s << "  CHECK(shadowproof::metamorphic_violation(*impl, c, \"" << f.relation << "\", " << f.threshold << "u).has_value());\n";
+    s << "  CHECK(shadowproof::metamorphic_violation(impl, c, \"" << f.relation << "\", " << f.threshold << "u).has_value());\n";
   } else {
-    s << "  std::vector<double> out(shadowproof::signature(c.op).output_count);\n"
-      << "  impl->run(c.inputs.data(), out.data());\n"
-      << "  const auto g = shadowproof::grade_case(c, impl->conv, out.data());\n";
+    s << "  const auto g = shadowproof::run_and_grade(impl, {c}).front();\n";
     switch (f.kind) {
       case failure_kind::nonfinite: s << "  CHECK(g.nonfinite > 0);\n"; break;
       case failure_kind::garbage: s << "  CHECK(g.garbage > 0);\n"; break;

@@ -7,16 +7,13 @@
 #include "shadowproof/basis.h"
 #include "shadowproof/error.h"
 #include "shadowproof/reflect.h"
+#include "support/exact_helpers.h"
 
 using namespace shadowproof;
+using shadowproof::testing::q;
+using shadowproof::testing::error_text;
 
 namespace {
-
-rational q(long p, long d = 1) {
-  rational r(p, d);
-  r.canonicalize();
-  return r;
-}
 
 // The columns of the quaternion rotation: frame_from_quaternion gives the rows of an orthonormal
 // matrix, and its columns are orthonormal too.
@@ -31,15 +28,6 @@ axes axes_of(const frame3<rational>& f) {
     a.z[i] = f.rows[i][2];
   }
   return a;
-}
-
-std::string error_text(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const error& e) {
-    return e.what();
-  }
-  return "no error";
 }
 
 }  // namespace

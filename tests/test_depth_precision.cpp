@@ -10,16 +10,13 @@
 
 #include "shadowproof/depth_precision.h"
 #include "shadowproof/error.h"
+#include "support/exact_helpers.h"
 
 using namespace shadowproof;
+using shadowproof::testing::q;
+using shadowproof::testing::error_text;
 
 namespace {
-
-rational q(long p, long d = 1) {
-  rational r(p, d);
-  r.canonicalize();
-  return r;
-}
 
 rational exact(float v) { return exact_value(static_cast<double>(v)); }
 
@@ -87,15 +84,6 @@ std::uint64_t enumerate_unorm24(const rational& lo, const rational& hi) {
     if (lo < m_hi || (lo == m_hi && e)) ++count;
   }
   return count;
-}
-
-std::string error_text(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const error& e) {
-    return e.what();
-  }
-  return "no error";
 }
 
 struct scenario {

@@ -4,24 +4,14 @@
 // the one `shadowproof fuzz --out` wrote (the size of the input before and after shrinking).
 #include <catch2/catch.hpp>
 
-#include <algorithm>
-#include <vector>
-
 #include "shadowproof/impl_registry.h"
 #include "shadowproof/verify.h"
 
 // eigen-intersection-f32: misclassified on a vertex_at_light_height case, shrunk from 97 to 93 bits.
 TEST_CASE("fuzz regression: eigen-intersection-f32 misclassified on vertex_at_light_height", "[fuzz][regression]") {
-  const auto& all = shadowproof::builtin_implementations();
-  const auto impl = std::find_if(all.begin(), all.end(), [](const shadowproof::implementation& i) { return i.name == "eigen-intersection-f32"; });
-  REQUIRE(impl != all.end());
-  shadowproof::test_case c;
-  c.op = shadowproof::operation_from_string("shadow-point").value();
-  c.type = shadowproof::scalar_type_from_string("f32").value();
-  c.inputs = {-0x1p+2, -0x1p+2, -0x1.4p+2, 0x0p+0, -0x1.4p+2, 0x1p+3, 0x1.4p+3, 0x1.fffffep-1, -0x1.4p+3, -0x1.6p+4, 0x1.3p+5};
-  std::vector<double> out(shadowproof::signature(c.op).output_count);
-  impl->run(c.inputs.data(), out.data());
-  const auto g = shadowproof::grade_case(c, impl->conv, out.data());
+  const auto& impl = shadowproof::find_builtin_implementation("eigen-intersection-f32");
+  const shadowproof::test_case c{0, impl.op, impl.type, shadowproof::input_class::regular, {-0x1p+2, -0x1p+2, -0x1.4p+2, 0x0p+0, -0x1.4p+2, 0x1p+3, 0x1.4p+3, 0x1.fffffep-1, -0x1.4p+3, -0x1.6p+4, 0x1.3p+5}};
+  const auto g = shadowproof::run_and_grade(impl, {c}).front();
   CHECK(g.misclassified);
   CHECK(shadowproof::to_string(*g.exact_class) == "shadow");
   CHECK(shadowproof::to_string(*g.got_class) == "beyond_light");
@@ -29,46 +19,25 @@ TEST_CASE("fuzz regression: eigen-intersection-f32 misclassified on vertex_at_li
 
 // seed000-general-f32: ulps on a light_parallel case, shrunk from 70 to 61 bits.
 TEST_CASE("fuzz regression: seed000-general-f32 ulps on light_parallel", "[fuzz][regression]") {
-  const auto& all = shadowproof::builtin_implementations();
-  const auto impl = std::find_if(all.begin(), all.end(), [](const shadowproof::implementation& i) { return i.name == "seed000-general-f32"; });
-  REQUIRE(impl != all.end());
-  shadowproof::test_case c;
-  c.op = shadowproof::operation_from_string("shadow-matrix").value();
-  c.type = shadowproof::scalar_type_from_string("f32").value();
-  c.inputs = {0x1.8p+2, -0x1.8p+1, -0x1p+0, 0x0p+0, -0x1.8p+1, 0x1p+2, -0x1.7ffffep+3, 0x0p+0};
-  std::vector<double> out(shadowproof::signature(c.op).output_count);
-  impl->run(c.inputs.data(), out.data());
-  const auto g = shadowproof::grade_case(c, impl->conv, out.data());
+  const auto& impl = shadowproof::find_builtin_implementation("seed000-general-f32");
+  const shadowproof::test_case c{0, impl.op, impl.type, shadowproof::input_class::regular, {0x1.8p+2, -0x1.8p+1, -0x1p+0, 0x0p+0, -0x1.8p+1, 0x1p+2, -0x1.7ffffep+3, 0x0p+0}};
+  const auto g = shadowproof::run_and_grade(impl, {c}).front();
   CHECK(g.max_ulps >= 1048576u);
 }
 
 // seed001-shader-f32: ulps on a light_parallel case, shrunk from 82 to 70 bits.
 TEST_CASE("fuzz regression: seed001-shader-f32 ulps on light_parallel", "[fuzz][regression]") {
-  const auto& all = shadowproof::builtin_implementations();
-  const auto impl = std::find_if(all.begin(), all.end(), [](const shadowproof::implementation& i) { return i.name == "seed001-shader-f32"; });
-  REQUIRE(impl != all.end());
-  shadowproof::test_case c;
-  c.op = shadowproof::operation_from_string("shadow-point").value();
-  c.type = shadowproof::scalar_type_from_string("f32").value();
-  c.inputs = {-0x1p+1, -0x1.4p+2, 0x1.2p+3, 0x0p+0, 0x1.28p+5, -0x1.effffep+4, -0x1.2p+3, 0x0p+0, 0x0p+0, 0x0p+0, 0x1p+0};
-  std::vector<double> out(shadowproof::signature(c.op).output_count);
-  impl->run(c.inputs.data(), out.data());
-  const auto g = shadowproof::grade_case(c, impl->conv, out.data());
+  const auto& impl = shadowproof::find_builtin_implementation("seed001-shader-f32");
+  const shadowproof::test_case c{0, impl.op, impl.type, shadowproof::input_class::regular, {-0x1p+1, -0x1.4p+2, 0x1.2p+3, 0x0p+0, 0x1.28p+5, -0x1.effffep+4, -0x1.2p+3, 0x0p+0, 0x0p+0, 0x0p+0, 0x1p+0}};
+  const auto g = shadowproof::run_and_grade(impl, {c}).front();
   CHECK(g.max_ulps >= 1048576u);
 }
 
 // homogeneous-image-f32: misclassified on a vertex_at_light_height case, shrunk from 94 to 89 bits.
 TEST_CASE("fuzz regression: homogeneous-image-f32 misclassified on vertex_at_light_height", "[fuzz][regression]") {
-  const auto& all = shadowproof::builtin_implementations();
-  const auto impl = std::find_if(all.begin(), all.end(), [](const shadowproof::implementation& i) { return i.name == "homogeneous-image-f32"; });
-  REQUIRE(impl != all.end());
-  shadowproof::test_case c;
-  c.op = shadowproof::operation_from_string("shadow-point").value();
-  c.type = shadowproof::scalar_type_from_string("f32").value();
-  c.inputs = {-0x1.2p+3, -0x1.000002p+2, -0x1.cp+2, 0x0p+0, -0x1.cp+2, 0x1.6p+3, -0x1.8p+2, 0x1p+0, 0x1.2p+4, 0x1.7p+4, -0x1.68p+5};
-  std::vector<double> out(shadowproof::signature(c.op).output_count);
-  impl->run(c.inputs.data(), out.data());
-  const auto g = shadowproof::grade_case(c, impl->conv, out.data());
+  const auto& impl = shadowproof::find_builtin_implementation("homogeneous-image-f32");
+  const shadowproof::test_case c{0, impl.op, impl.type, shadowproof::input_class::regular, {-0x1.2p+3, -0x1.000002p+2, -0x1.cp+2, 0x0p+0, -0x1.cp+2, 0x1.6p+3, -0x1.8p+2, 0x1p+0, 0x1.2p+4, 0x1.7p+4, -0x1.68p+5}};
+  const auto g = shadowproof::run_and_grade(impl, {c}).front();
   CHECK(g.misclassified);
   CHECK(shadowproof::to_string(*g.exact_class) == "shadow");
   CHECK(shadowproof::to_string(*g.got_class) == "beyond_light");
@@ -76,16 +45,9 @@ TEST_CASE("fuzz regression: homogeneous-image-f32 misclassified on vertex_at_lig
 
 // seed001-shader-f32: nonfinite on a light_parallel case, shrunk from 28 to 16 bits.
 TEST_CASE("fuzz regression: seed001-shader-f32 nonfinite on light_parallel", "[fuzz][regression]") {
-  const auto& all = shadowproof::builtin_implementations();
-  const auto impl = std::find_if(all.begin(), all.end(), [](const shadowproof::implementation& i) { return i.name == "seed001-shader-f32"; });
-  REQUIRE(impl != all.end());
-  shadowproof::test_case c;
-  c.op = shadowproof::operation_from_string("shadow-point").value();
-  c.type = shadowproof::scalar_type_from_string("f32").value();
-  c.inputs = {-0x0p+0, 0x1.4p+3, -0x0p+0, -0x1.4p+4, -0x0p+0, 0x0p+0, 0x1p+0, 0x0p+0, 0x0p+0, 0x1p+1, 0x0p+0};
-  std::vector<double> out(shadowproof::signature(c.op).output_count);
-  impl->run(c.inputs.data(), out.data());
-  const auto g = shadowproof::grade_case(c, impl->conv, out.data());
+  const auto& impl = shadowproof::find_builtin_implementation("seed001-shader-f32");
+  const shadowproof::test_case c{0, impl.op, impl.type, shadowproof::input_class::regular, {-0x0p+0, 0x1.4p+3, -0x0p+0, -0x1.4p+4, -0x0p+0, 0x0p+0, 0x1p+0, 0x0p+0, 0x0p+0, 0x1p+1, 0x0p+0}};
+  const auto g = shadowproof::run_and_grade(impl, {c}).front();
   CHECK(g.nonfinite > 0);
 }
 

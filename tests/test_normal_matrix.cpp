@@ -5,28 +5,16 @@
 
 #include "shadowproof/error.h"
 #include "shadowproof/normal_matrix.h"
+#include "support/exact_helpers.h"
 
 using namespace shadowproof;
+using shadowproof::testing::q;
+using shadowproof::testing::error_text;
 
 namespace {
 
-rational q(long p, long d = 1) {
-  rational r(p, d);
-  r.canonicalize();
-  return r;
-}
-
 vec4<rational> direction(const rational& x, const rational& y, const rational& z) {
   return make_vec4<rational>(x, y, z, 0);
-}
-
-std::string error_text(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const error& e) {
-    return e.what();
-  }
-  return "no error";
 }
 
 // Non-uniform scale S(2, 1/3, 5), then a shear x += (1/2) y + z, y += (−3/4) z, then a

@@ -11,8 +11,11 @@
 
 #include "shadowproof/error.h"
 #include "shadowproof/project.h"
+#include "support/exact_helpers.h"
 
 using namespace shadowproof;
+using shadowproof::testing::q;
+using shadowproof::testing::error_text;
 
 namespace {
 
@@ -50,21 +53,6 @@ void check_ndc(const mat4<T>& M, const T& x, const T& y, const T& z, int ex, int
   CHECK(same(p[0], T(ex)));
   CHECK(same(p[1], T(ey)));
   CHECK(same(p[2], T(ez)));
-}
-
-std::string error_text(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const error& e) {
-    return e.what();
-  }
-  return "no error";
-}
-
-rational q(long p, long d = 1) {
-  rational r(p, d);
-  r.canonicalize();
-  return r;
 }
 
 // Monotonicity, proved exactly. Along the view axis z_ndc(z) = (a z + b)/(c z + d) with

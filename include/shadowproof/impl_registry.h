@@ -110,4 +110,7 @@ struct implementation {
 /// as shaders and engines write them, and engine code from Debian packages. Sorted by name.
 const std::vector<implementation>& builtin_implementations();
 
+/// The built-in implementation called `name`; throws error "verify.unknown_impl" naming it.
+const implementation& find_builtin_implementation(std::string_view name);
+
 }  // namespace shadowproof

@@ -28,11 +28,6 @@ struct fuzz_options {
   bool no_metamorphic = false;
 };
 
-const implementation& find_impl(const std::string& name) {
-  for (const auto& i : builtin_implementations())
-    if (i.name == name) return i;
-  throw error("fuzz.unknown_impl", "no implementation named '" + name + "' (see 'shadowproof check --list')");
-}
 
 nlohmann::json case_object(const test_case& c) { return nlohmann::json::parse(case_json_line(c)); }
 
@@ -81,7 +76,7 @@ void print_text(std::ostream& out, const fuzz_report& r) {
 }
 
 int run_fuzz_command(const fuzz_options& o) {
-  const implementation& impl = find_impl(o.impl);
+  const implementation& impl = find_builtin_implementation(o.impl);
   fuzz_settings s;
   if (o.seconds > 0) s.seconds = o.seconds;
   if (o.cases > 0) s.cases = o.cases;

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "impls.h"
+#include "shadowproof/error.h"
 
 namespace shadowproof {
 
@@ -30,6 +31,13 @@ const std::vector<implementation>& builtin_implementations() {
     return v;
   }();
   return all;
+}
+
+const implementation& find_builtin_implementation(std::string_view name) {
+  for (const auto& i : builtin_implementations())
+    if (i.name == name) return i;
+  throw error("verify.unknown_impl",
+              "no implementation named '" + std::string(name) + "' (see 'shadowproof check --list')");
 }
 
 }  // namespace shadowproof
