@@ -342,6 +342,7 @@ class region_builder {
   void prepare_clip();
   void process_caster(std::size_t ci);
   void process_triangle(const std::array<point3, 3>& tri, bool edge_on, std::size_t ci);
+  std::vector<point3> clip_to_halfspace(const std::vector<point3>& poly, const vec4<rational>& h) const;
   void add_projected(std::vector<point2> pts, std::size_t ci);
   point2 project(const point3& V) const;
   rational clip_value(const vec4<rational>& h, const point3& V) const {
@@ -528,6 +529,23 @@ void region_builder::add_projected(std::vector<point2> pts, std::size_t ci) {
   degenerate_.push_back({lo, hi});
 }
 
+// Sutherland–Hodgman against one half-space h(X) ≥ 0, exactly: the part of the convex polygon
+// `poly` (in 3D) that h keeps, with the crossing points of its edges computed over rationals.
+std::vector<point3> region_builder::clip_to_halfspace(const std::vector<point3>& poly, const vec4<rational>& h) const {
+  std::vector<point3> out;
+  for (std::size_t i = 0; i < poly.size(); ++i) {
+    const point3& a = poly[i];
+    const point3& b = poly[(i + 1) % poly.size()];
+    const rational ha = clip_value(h, a), hb = clip_value(h, b);
+    if (sgn(ha) >= 0) out.push_back(a);
+    if (sgn(ha) * sgn(hb) < 0) {
+      const rational u = ha / (ha - hb);
+      out.push_back({a[0] + u * (b[0] - a[0]), a[1] + u * (b[1] - a[1]), a[2] + u * (b[2] - a[2])});
+    }
+  }
+  return out;
+}
+
 void region_builder::process_triangle(const std::array<point3, 3>& tri, bool edge_on, std::size_t ci) {
   std::vector<point3> poly(tri.begin(), tri.end());
   if (sgn(s_) == 0) {
@@ -535,18 +553,7 @@ void region_builder::process_triangle(const std::array<point3, 3>& tri, bool edg
     const vec4<rational> up = P_.p;
     const vec4<rational> down = rational(-1) * P_.p;
     for (const auto& h : {up, down}) {
-      std::vector<point3> out;
-      for (std::size_t i = 0; i < poly.size(); ++i) {
-        const point3& a = poly[i];
-        const point3& b = poly[(i + 1) % poly.size()];
-        const rational ha = clip_value(h, a), hb = clip_value(h, b);
-        if (sgn(ha) >= 0) out.push_back(a);
-        if (sgn(ha) * sgn(hb) < 0) {
-          const rational u = ha / (ha - hb);
-          out.push_back({a[0] + u * (b[0] - a[0]), a[1] + u * (b[1] - a[1]), a[2] + u * (b[2] - a[2])});
-        }
-      }
-      poly = std::move(out);
+      poly = clip_to_halfspace(poly, h);
       if (poly.empty()) return;
     }
     std::vector<point2> pts;
@@ -555,18 +562,7 @@ void region_builder::process_triangle(const std::array<point3, 3>& tri, bool edg
     return;
   }
   for (const auto& h : halfspaces_) {
-    std::vector<point3> out;
-    for (std::size_t i = 0; i < poly.size(); ++i) {
-      const point3& a = poly[i];
-      const point3& b = poly[(i + 1) % poly.size()];
-      const rational ha = clip_value(h, a), hb = clip_value(h, b);
-      if (sgn(ha) >= 0) out.push_back(a);
-      if (sgn(ha) * sgn(hb) < 0) {
-        const rational u = ha / (ha - hb);
-        out.push_back({a[0] + u * (b[0] - a[0]), a[1] + u * (b[1] - a[1]), a[2] + u * (b[2] - a[2])});
-      }
-    }
-    poly = std::move(out);
+    poly = clip_to_halfspace(poly, h);
     if (poly.empty()) return;
   }
   if (edge_on) note(shadow_case::caster_edge_on);
