@@ -956,29 +956,19 @@ float_comparison compare_with_float(const scene& s, const shadow_region& exact) 
         const float y = img[static_cast<std::size_t>((k + 2) % 3)] / img[3];
         proj.push_back({x, y});
       }
-      // Non-finite projected vertices (w = 0 or overflow) poison the clip: count and skip.
-      bool finite = true;
-      for (const auto& p : proj)
-        if (!std::isfinite(p[0]) || !std::isfinite(p[1])) {
-          ++c.non_finite_vertices;
-          finite = false;
-        }
-      if (!finite) {
-        ++c.invalid_polygons;
-        continue;
-      }
+      // Non-finite vertices (w = 0 or overflow) poison the clip: count them and skip the polygon.
+      auto all_finite = [&c](const auto& pts) {
+        std::size_t bad = 0;
+        for (const auto& p : pts) bad += (!std::isfinite(p[0]) || !std::isfinite(p[1])) ? 1 : 0;
+        c.non_finite_vertices += bad;
+        if (bad > 0) ++c.invalid_polygons;
+        return bad == 0;
+      };
+      if (!all_finite(proj)) continue;
       auto out = sutherland_hodgman(proj, clip);
       if (out.empty()) continue;
       ++c.float_polygons;
-      for (const auto& p : out)
-        if (!std::isfinite(p[0]) || !std::isfinite(p[1])) {
-          ++c.non_finite_vertices;
-          finite = false;
-        }
-      if (!finite) {
-        ++c.invalid_polygons;
-        continue;
-      }
+      if (!all_finite(out)) continue;
       std::vector<point2> q;
       for (const auto& p : out) q.push_back({exact_value(p[0]), exact_value(p[1])});
       for (const auto& p : q)
