@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "shadowproof/clip.h"
+#include "shadowproof/clip/shadow_region.h"
 
 using namespace shadowproof;
 

@@ -23,8 +23,12 @@
 #include <string>
 #include <vector>
 
-#include "shadowproof/impl_registry.h"
-#include "shadowproof/verify.h"
+#include "shadowproof/verify/operation.h"
+#include "shadowproof/verify/implementation.h"
+#include "shadowproof/impls/builtin.h"
+#include "shadowproof/verify/cases.h"
+#include "shadowproof/verify/grade.h"
+#include "shadowproof/verify/protocol.h"
 
 namespace {
 

@@ -1,7 +1,9 @@
 include(CMakePackageConfigHelpers)
 set(SHADOWPROOF_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/shadowproof)
 
-install(TARGETS shadowproof EXPORT shadowproof-targets
+# shadowproof::shadowproof (the library) and shadowproof::impls (the built-in implementations
+# under test, for tools built on top of the grader).
+install(TARGETS shadowproof shadowproof_impls EXPORT shadowproof-targets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
@@ -11,6 +13,12 @@ if(TARGET shadowproof_cli)
 endif()
 install(EXPORT shadowproof-targets NAMESPACE shadowproof:: DESTINATION ${SHADOWPROOF_CMAKE_DIR})
 
+# The config file re-finds what the exported static libraries link against.
+if("ogre" IN_LIST SHADOWPROOF_ENGINES)
+  set(SHADOWPROOF_IMPLS_OGRE ON)
+else()
+  set(SHADOWPROOF_IMPLS_OGRE OFF)
+endif()
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/shadowproof-config.cmake.in
   ${PROJECT_BINARY_DIR}/shadowproof-config.cmake INSTALL_DESTINATION ${SHADOWPROOF_CMAKE_DIR})
 write_basic_package_version_file(${PROJECT_BINARY_DIR}/shadowproof-config-version.cmake

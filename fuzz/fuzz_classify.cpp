@@ -7,9 +7,9 @@
 #include <cstdint>
 #include <cstdlib>
 
-#include "shadowproof/classify.h"
-#include "shadowproof/fuzz.h"
-#include "shadowproof/shadow.h"
+#include "shadowproof/constructions/classify.h"
+#include "byte_source.h"
+#include "shadowproof/constructions/shadow.h"
 
 namespace {
 

@@ -7,9 +7,9 @@
 #include <cstdint>
 #include <cstdlib>
 
-#include "shadowproof/clip.h"
-#include "shadowproof/error.h"
-#include "shadowproof/fuzz.h"
+#include "shadowproof/clip/shadow_region.h"
+#include "shadowproof/core/error.h"
+#include "byte_source.h"
 
 namespace {
 

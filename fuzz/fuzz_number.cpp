@@ -7,8 +7,8 @@
 #include <limits>
 #include <string_view>
 
-#include "shadowproof/error.h"
-#include "shadowproof/number.h"
+#include "shadowproof/core/error.h"
+#include "shadowproof/core/number.h"
 
 namespace {
 

@@ -7,11 +7,14 @@
 #include <cstdlib>
 #include <vector>
 
-#include "shadowproof/differential.h"
-#include "shadowproof/error.h"
-#include "shadowproof/fuzz.h"
-#include "shadowproof/impl_registry.h"
-#include "shadowproof/verify.h"
+#include "shadowproof/fuzz/differential.h"
+#include "shadowproof/core/error.h"
+#include "byte_source.h"
+#include "shadowproof/verify/operation.h"
+#include "shadowproof/verify/implementation.h"
+#include "shadowproof/impls/builtin.h"
+#include "shadowproof/verify/cases.h"
+#include "shadowproof/verify/grade.h"
 
 namespace {
 

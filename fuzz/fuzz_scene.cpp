@@ -6,8 +6,8 @@
 #include <sstream>
 #include <string>
 
-#include "shadowproof/error.h"
-#include "shadowproof/scene.h"
+#include "shadowproof/core/error.h"
+#include "shadowproof/clip/scene.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace shadowproof;

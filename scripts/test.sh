@@ -13,3 +13,14 @@ export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:detect_stack_use_after_retu
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 export LSAN_OPTIONS="suppressions=$root/tests/sanitizers/lsan.supp:print_suppressions=0"
 ctest --test-dir "$build" --output-on-failure -j"$(nproc)"
+
+# The oracle's exact arithmetic on an FMA target (preset fma, -march=x86-64-v3 -O2): the
+# agreement tests of the dedicated kernels with the rational oracle, where the compiler could
+# contract a*b+c. Needs a CPU with AVX2 and FMA; skipped (and said so) on one without.
+if grep -qw fma /proc/cpuinfo && grep -qw avx2 /proc/cpuinfo; then
+  (cd "$root" && cmake --preset fma -B "$root/build/fma" >/dev/null)
+  cmake --build "$root/build/fma" -j"$(nproc)" --target test_verify test_number test_ulp
+  ctest --test-dir "$root/build/fma" -R "^test_(verify|number|ulp):" --output-on-failure -j"$(nproc)"
+else
+  echo "test.sh: this CPU has no FMA/AVX2; the fma preset's tests were not run"
+fi

@@ -9,13 +9,13 @@
 #include <map>
 #include <string>
 
-#include "shadowproof/error.h"
-#include "shadowproof/io.h"
-#include "shadowproof/light.h"
-#include "shadowproof/number.h"
-#include "shadowproof/plane.h"
-#include "shadowproof/clip.h"
-#include "shadowproof/scene.h"
+#include "shadowproof/core/error.h"
+#include "shadowproof/core/io.h"
+#include "shadowproof/core/light.h"
+#include "shadowproof/core/number.h"
+#include "shadowproof/core/plane.h"
+#include "shadowproof/clip/shadow_region.h"
+#include "shadowproof/clip/scene.h"
 
 using namespace shadowproof;
 namespace fs = std::filesystem;

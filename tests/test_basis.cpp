@@ -4,9 +4,9 @@
 
 #include <functional>
 
-#include "shadowproof/basis.h"
-#include "shadowproof/error.h"
-#include "shadowproof/reflect.h"
+#include "shadowproof/constructions/basis.h"
+#include "shadowproof/core/error.h"
+#include "shadowproof/constructions/reflect.h"
 #include "support/exact_helpers.h"
 
 using namespace shadowproof;

@@ -1,8 +1,8 @@
 // Exact classification of a point under a receiver plane and a light.
 #include <catch2/catch.hpp>
 
-#include "shadowproof/classify.h"
-#include "shadowproof/shadow.h"
+#include "shadowproof/constructions/classify.h"
+#include "shadowproof/constructions/shadow.h"
 #include "support/random_exact.h"
 
 using namespace shadowproof;

@@ -7,9 +7,9 @@
 #include <random>
 #include <sstream>
 
-#include "shadowproof/clip.h"
-#include "shadowproof/reflect.h"
-#include "shadowproof/svg.h"
+#include "shadowproof/clip/shadow_region.h"
+#include "shadowproof/constructions/reflect.h"
+#include "shadowproof/clip/svg.h"
 
 using namespace shadowproof;
 

@@ -8,8 +8,8 @@
 #include <functional>
 #include <limits>
 
-#include "shadowproof/depth_precision.h"
-#include "shadowproof/error.h"
+#include "shadowproof/constructions/depth_precision.h"
+#include "shadowproof/core/error.h"
 #include "support/exact_helpers.h"
 
 using namespace shadowproof;

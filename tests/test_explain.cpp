@@ -4,10 +4,10 @@
 
 #include <string>
 
-#include "shadowproof/explain.h"
-#include "shadowproof/normal_matrix.h"
-#include "shadowproof/reflect.h"
-#include "shadowproof/shadow.h"
+#include "shadowproof/explain/explain.h"
+#include "shadowproof/constructions/normal_matrix.h"
+#include "shadowproof/constructions/reflect.h"
+#include "shadowproof/constructions/shadow.h"
 
 using namespace shadowproof;
 

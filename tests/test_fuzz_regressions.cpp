@@ -4,9 +4,12 @@
 // the one `shadowproof fuzz --out` wrote (the size of the input before and after shrinking).
 #include <catch2/catch.hpp>
 
-#include "shadowproof/impl_registry.h"
-#include "shadowproof/verify.h"
+#include "shadowproof/verify/implementation.h"
+#include "shadowproof/impls/builtin.h"
+#include "shadowproof/verify/cases.h"
+#include "shadowproof/verify/report.h"
 
+#if SHADOWPROOF_HAVE_EIGEN
 // eigen-intersection-f32: misclassified on a vertex_at_light_height case, shrunk from 97 to 93 bits.
 TEST_CASE("fuzz regression: eigen-intersection-f32 misclassified on vertex_at_light_height", "[fuzz][regression]") {
   const auto& impl = shadowproof::find_builtin_implementation("eigen-intersection-f32");
@@ -16,6 +19,7 @@ TEST_CASE("fuzz regression: eigen-intersection-f32 misclassified on vertex_at_li
   CHECK(shadowproof::to_string(*g.exact_class) == "shadow");
   CHECK(shadowproof::to_string(*g.got_class) == "beyond_light");
 }
+#endif
 
 // seed000-general-f32: ulps on a light_parallel case, shrunk from 70 to 61 bits.
 TEST_CASE("fuzz regression: seed000-general-f32 ulps on light_parallel", "[fuzz][regression]") {

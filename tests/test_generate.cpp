@@ -6,8 +6,8 @@
 #include <map>
 #include <set>
 
-#include "shadowproof/classify.h"
-#include "shadowproof/generate.h"
+#include "shadowproof/constructions/classify.h"
+#include "shadowproof/fuzz/generate.h"
 
 using namespace shadowproof;
 

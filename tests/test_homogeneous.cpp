@@ -1,7 +1,7 @@
 // Homogeneous vectors and matrices, generic over the number type.
 #include <catch2/catch.hpp>
 
-#include "shadowproof/homogeneous.h"
+#include "shadowproof/core/homogeneous.h"
 #include "support/random_exact.h"
 
 using namespace shadowproof;

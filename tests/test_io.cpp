@@ -5,8 +5,8 @@
 #include <fstream>
 #include <functional>
 
-#include "shadowproof/error.h"
-#include "shadowproof/io.h"
+#include "shadowproof/core/error.h"
+#include "shadowproof/core/io.h"
 
 using namespace shadowproof;
 namespace fs = std::filesystem;

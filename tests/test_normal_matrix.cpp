@@ -3,8 +3,8 @@
 
 #include <functional>
 
-#include "shadowproof/error.h"
-#include "shadowproof/normal_matrix.h"
+#include "shadowproof/core/error.h"
+#include "shadowproof/constructions/normal_matrix.h"
 #include "support/exact_helpers.h"
 
 using namespace shadowproof;

@@ -9,8 +9,8 @@
 #include <random>
 #include <string>
 
-#include "shadowproof/error.h"
-#include "shadowproof/number.h"
+#include "shadowproof/core/error.h"
+#include "shadowproof/core/number.h"
 
 using namespace shadowproof;
 

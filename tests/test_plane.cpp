@@ -1,8 +1,8 @@
 // Planes and lights: construction and the errors for impossible ones.
 #include <catch2/catch.hpp>
 
-#include "shadowproof/light.h"
-#include "shadowproof/plane.h"
+#include "shadowproof/core/light.h"
+#include "shadowproof/core/plane.h"
 
 using namespace shadowproof;
 

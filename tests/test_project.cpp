@@ -9,8 +9,8 @@
 #include <limits>
 #include <vector>
 
-#include "shadowproof/error.h"
-#include "shadowproof/project.h"
+#include "shadowproof/core/error.h"
+#include "shadowproof/constructions/project.h"
 #include "support/exact_helpers.h"
 
 using namespace shadowproof;

@@ -1,7 +1,7 @@
 // The planar reflection matrix: closed form, its properties, and the frame composition.
 #include <catch2/catch.hpp>
 
-#include "shadowproof/reflect.h"
+#include "shadowproof/constructions/reflect.h"
 #include "support/random_exact.h"
 
 using namespace shadowproof;

@@ -3,8 +3,8 @@
 
 #include <sstream>
 
-#include "shadowproof/error.h"
-#include "shadowproof/scene.h"
+#include "shadowproof/core/error.h"
+#include "shadowproof/clip/scene.h"
 
 using namespace shadowproof;
 

@@ -1,7 +1,7 @@
 // The planar shadow matrix and every closed form the reference derivations give for it.
 #include <catch2/catch.hpp>
 
-#include "shadowproof/shadow.h"
+#include "shadowproof/constructions/shadow.h"
 #include "support/random_exact.h"
 
 using namespace shadowproof;

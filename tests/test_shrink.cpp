@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "shadowproof/shrink.h"
+#include "shadowproof/fuzz/shrink.h"
 
 using namespace shadowproof;
 

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <limits>
 
-#include "shadowproof/number.h"
-#include "shadowproof/ulp.h"
+#include "shadowproof/core/number.h"
+#include "shadowproof/core/ulp.h"
 
 using namespace shadowproof;
 

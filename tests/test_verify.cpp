@@ -7,12 +7,16 @@
 #include <limits>
 #include <random>
 
-#include "shadowproof/error.h"
-#include "shadowproof/normal_matrix.h"
-#include "shadowproof/project.h"
-#include "shadowproof/reflect.h"
-#include "shadowproof/shadow.h"
-#include "shadowproof/verify.h"
+#include "shadowproof/core/error.h"
+#include "shadowproof/constructions/normal_matrix.h"
+#include "shadowproof/constructions/project.h"
+#include "shadowproof/constructions/reflect.h"
+#include "shadowproof/constructions/shadow.h"
+#include "shadowproof/verify/operation.h"
+#include "shadowproof/verify/conventions.h"
+#include "shadowproof/verify/cases.h"
+#include "shadowproof/verify/grade.h"
+#include "shadowproof/verify/protocol.h"
 
 using namespace shadowproof;
 

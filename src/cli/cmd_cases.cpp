@@ -2,8 +2,12 @@
 #include <iostream>
 
 #include "command.h"
-#include "shadowproof/error.h"
-#include "shadowproof/verify.h"
+#include "shadowproof/core/error.h"
+#include "shadowproof/verify/operation.h"
+#include "shadowproof/verify/conventions.h"
+#include "shadowproof/verify/implementation.h"
+#include "shadowproof/verify/cases.h"
+#include "shadowproof/verify/protocol.h"
 
 namespace shadowproof::cli {
 namespace {

@@ -11,10 +11,15 @@
 #include <sstream>
 
 #include "command.h"
-#include "shadowproof/error.h"
-#include "shadowproof/io.h"
-#include "shadowproof/impl_registry.h"
-#include "shadowproof/verify.h"
+#include "shadowproof/core/error.h"
+#include "shadowproof/core/io.h"
+#include "shadowproof/verify/operation.h"
+#include "shadowproof/verify/conventions.h"
+#include "shadowproof/verify/implementation.h"
+#include "shadowproof/impls/builtin.h"
+#include "shadowproof/verify/cases.h"
+#include "shadowproof/verify/grade.h"
+#include "shadowproof/verify/report.h"
 #include "verify_print.h"
 
 namespace shadowproof::cli {

@@ -7,10 +7,10 @@
 #include <nlohmann/json.hpp>
 
 #include "command.h"
-#include "shadowproof/clip.h"
-#include "shadowproof/io.h"
-#include "shadowproof/error.h"
-#include "shadowproof/svg.h"
+#include "shadowproof/clip/shadow_region.h"
+#include "shadowproof/core/io.h"
+#include "shadowproof/core/error.h"
+#include "shadowproof/clip/svg.h"
 
 namespace shadowproof::cli {
 

@@ -4,12 +4,12 @@
 
 #include "command.h"
 #include "print.h"
-#include "shadowproof/classify.h"
-#include "shadowproof/clip.h"
-#include "shadowproof/io.h"
-#include "shadowproof/svg.h"
-#include "shadowproof/reflect.h"
-#include "shadowproof/shadow.h"
+#include "shadowproof/constructions/classify.h"
+#include "shadowproof/clip/shadow_region.h"
+#include "shadowproof/core/io.h"
+#include "shadowproof/clip/svg.h"
+#include "shadowproof/constructions/reflect.h"
+#include "shadowproof/constructions/shadow.h"
 
 namespace shadowproof::cli {
 namespace {

@@ -11,11 +11,11 @@
 #include <sstream>
 
 #include "command.h"
-#include "shadowproof/io.h"
+#include "shadowproof/core/io.h"
 #include "print.h"
 #include "projection_options.h"
-#include "shadowproof/depth_precision.h"
-#include "shadowproof/error.h"
+#include "shadowproof/constructions/depth_precision.h"
+#include "shadowproof/core/error.h"
 
 namespace shadowproof::cli {
 namespace {

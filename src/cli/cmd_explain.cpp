@@ -6,8 +6,8 @@
 #include "command.h"
 #include "print.h"
 #include "projection_options.h"
-#include "shadowproof/error.h"
-#include "shadowproof/explain.h"
+#include "shadowproof/core/error.h"
+#include "shadowproof/explain/explain.h"
 
 namespace shadowproof::cli {
 namespace {

@@ -8,11 +8,14 @@
 #include <nlohmann/json.hpp>
 
 #include "command.h"
-#include "shadowproof/differential.h"
-#include "shadowproof/error.h"
-#include "shadowproof/impl_registry.h"
-#include "shadowproof/io.h"
-#include "shadowproof/ulp.h"
+#include "shadowproof/fuzz/differential.h"
+#include "shadowproof/core/error.h"
+#include "shadowproof/verify/implementation.h"
+#include "shadowproof/impls/builtin.h"
+#include "shadowproof/verify/cases.h"
+#include "shadowproof/verify/protocol.h"
+#include "shadowproof/core/io.h"
+#include "shadowproof/core/ulp.h"
 
 namespace shadowproof::cli {
 namespace {

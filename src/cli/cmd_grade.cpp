@@ -5,8 +5,13 @@
 #include <map>
 
 #include "command.h"
-#include "shadowproof/error.h"
-#include "shadowproof/verify.h"
+#include "shadowproof/core/error.h"
+#include "shadowproof/verify/operation.h"
+#include "shadowproof/verify/conventions.h"
+#include "shadowproof/verify/cases.h"
+#include "shadowproof/verify/grade.h"
+#include "shadowproof/verify/report.h"
+#include "shadowproof/verify/protocol.h"
 #include "verify_print.h"
 
 namespace shadowproof::cli {

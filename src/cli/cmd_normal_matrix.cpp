@@ -5,7 +5,7 @@
 
 #include "command.h"
 #include "print.h"
-#include "shadowproof/normal_matrix.h"
+#include "shadowproof/constructions/normal_matrix.h"
 
 namespace shadowproof::cli {
 namespace {

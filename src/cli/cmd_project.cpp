@@ -6,7 +6,7 @@
 #include "command.h"
 #include "print.h"
 #include "projection_options.h"
-#include "shadowproof/project.h"
+#include "shadowproof/constructions/project.h"
 
 namespace shadowproof::cli {
 namespace {

@@ -3,8 +3,8 @@
 
 #include "command.h"
 #include "print.h"
-#include "shadowproof/classify.h"
-#include "shadowproof/shadow.h"
+#include "shadowproof/constructions/classify.h"
+#include "shadowproof/constructions/shadow.h"
 
 namespace shadowproof::cli {
 namespace {

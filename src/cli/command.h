@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "shadowproof/number.h"
+#include "shadowproof/core/number.h"
 
 namespace shadowproof::cli {
 

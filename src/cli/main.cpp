@@ -4,7 +4,7 @@
 #include <iostream>
 
 #include "command.h"
-#include "shadowproof/error.h"
+#include "shadowproof/core/error.h"
 
 namespace shadowproof::cli {
 

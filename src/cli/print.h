@@ -8,7 +8,7 @@
 #include <string_view>
 #include <vector>
 
-#include "shadowproof/homogeneous.h"
+#include "shadowproof/core/homogeneous.h"
 
 namespace shadowproof::cli {
 

@@ -2,7 +2,7 @@
 
 #include <set>
 
-#include "shadowproof/error.h"
+#include "shadowproof/core/error.h"
 
 namespace shadowproof::cli {
 namespace {

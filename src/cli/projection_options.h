@@ -5,8 +5,8 @@
 #include <vector>
 
 #include "command.h"
-#include "shadowproof/homogeneous.h"
-#include "shadowproof/project.h"
+#include "shadowproof/core/homogeneous.h"
+#include "shadowproof/constructions/project.h"
 
 namespace shadowproof::cli {
 

@@ -5,7 +5,7 @@
 #include <iomanip>
 #include <sstream>
 
-#include "shadowproof/ulp.h"
+#include "shadowproof/core/ulp.h"
 
 namespace shadowproof::cli {
 namespace {

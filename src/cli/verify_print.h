@@ -7,7 +7,12 @@
 #include <string>
 #include <vector>
 
-#include "shadowproof/verify.h"
+#include "shadowproof/verify/operation.h"
+#include "shadowproof/verify/conventions.h"
+#include "shadowproof/verify/implementation.h"
+#include "shadowproof/verify/cases.h"
+#include "shadowproof/verify/grade.h"
+#include "shadowproof/verify/report.h"
 
 namespace shadowproof::cli {
 

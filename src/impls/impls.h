@@ -2,7 +2,7 @@
 // Internal to shadowproof_impls: each file adds its implementations to the list.
 #include <vector>
 
-#include "shadowproof/impl_registry.h"
+#include "shadowproof/verify/implementation.h"
 
 namespace shadowproof::impls {
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "impls.h"
-#include "shadowproof/error.h"
+#include "shadowproof/core/error.h"
 
 namespace shadowproof {
 

@@ -4,7 +4,7 @@
 #include <limits>
 
 #include "impls.h"
-#include "shadowproof/normal_matrix.h"
+#include "shadowproof/constructions/normal_matrix.h"
 
 namespace shadowproof::impls {
 namespace {

@@ -4,7 +4,7 @@
 #include <limits>
 
 #include "impls.h"
-#include "shadowproof/project.h"
+#include "shadowproof/constructions/project.h"
 
 namespace shadowproof::impls {
 namespace {

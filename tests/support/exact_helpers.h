@@ -3,8 +3,8 @@
 #include <functional>
 #include <string>
 
-#include "shadowproof/error.h"
-#include "shadowproof/number.h"
+#include "shadowproof/core/error.h"
+#include "shadowproof/core/number.h"
 
 namespace shadowproof::testing {
 

@@ -4,9 +4,9 @@
 #include <cstdint>
 #include <random>
 
-#include "shadowproof/homogeneous.h"
-#include "shadowproof/light.h"
-#include "shadowproof/plane.h"
+#include "shadowproof/core/homogeneous.h"
+#include "shadowproof/core/light.h"
+#include "shadowproof/core/plane.h"
 
 namespace shadowproof::testing {
 

@@ -1,0 +1,74 @@
+#pragma once
+/// Differential fuzzing of a registered implementation against the exact oracle, with
+/// shrinking of every failure and metamorphic checks that need no oracle.
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "shadowproof/fuzz/generate.h"
+#include "shadowproof/verify/operation.h"
+#include "shadowproof/verify/implementation.h"
+#include "shadowproof/verify/cases.h"
+#include "shadowproof/verify/grade.h"
+
+namespace shadowproof {
+
+/// How a case fails. `metamorphic`: the implementation's outputs for a transformed input are
+/// not the transformed outputs (no oracle involved).
+enum class failure_kind { nonfinite, garbage, misclassified, ulps, metamorphic };
+std::string_view to_string(failure_kind k);
+
+struct fuzz_settings {
+  std::optional<double> seconds;        ///< stop after this long (the case count then varies)
+  std::optional<std::size_t> cases;     ///< or after this many cases (byte-identical reruns)
+  std::uint64_t seed = 1;
+  std::uint64_t ulps_threshold = 1u << 20;  ///< an output this many ulps off (or more) fails
+  bool metamorphic = true;
+  std::size_t shrink_budget = 4000;     ///< predicate calls per shrink
+};
+
+struct fuzz_failure {
+  failure_kind kind = failure_kind::ulps;
+  std::string family;     ///< generator family of the original case
+  std::string relation;   ///< metamorphic relation ("scale_plane", ...), else empty
+  test_case original, shrunk;
+  case_grade original_grade, shrunk_grade;  ///< metamorphic: grades of the untransformed case
+  double bits = 0;        ///< bits of error of the original (metamorphic: of the disagreement)
+  std::size_t bits_before = 0, bits_after = 0;
+  std::uint64_t threshold = 0;  ///< the ulps threshold the failure was found with
+};
+
+struct fuzz_report {
+  std::string impl;
+  std::size_t cases = 0;
+  std::map<std::string, std::size_t> failing_cases;  ///< by kind, before de-duplication
+  std::map<std::string, std::uint64_t> metamorphic_max_ulps;  ///< by relation
+  /// The first failure of each (kind, family[, relation]), shrunk; in the order found.
+  std::vector<fuzz_failure> failures;
+};
+
+/// The generated configuration as a case of `impl`'s operation and type, within its declared
+/// requirements. Exact families become `degenerate`, their ulp/2^-k neighbours
+/// `near_degenerate`, the rest `regular`.
+test_case make_fuzz_case(const generated_case<double>& g, const implementation& impl, std::uint64_t id);
+
+/// Runs the campaign. `progress(cases, failures)` is called about once a second.
+fuzz_report run_fuzz(const implementation& impl, const fuzz_settings& settings,
+                     const std::function<void(std::size_t, std::size_t)>& progress = {});
+
+/// The metamorphic relations that apply to `op` (names as in the report).
+std::vector<std::string> metamorphic_relations(operation op);
+
+/// Checks one relation on one case: nothing when it holds (or does not apply to the case),
+/// otherwise the disagreement in ulps (UINT64_MAX when one side is non-finite and the other not).
+std::optional<std::uint64_t> metamorphic_violation(const implementation& impl, const test_case& c,
+                                                   const std::string& relation, std::uint64_t threshold);
+
+/// A ready-to-paste Catch2 test that reproduces the (shrunk) failure through the registry.
+std::string catch2_regression_test(const implementation& impl, const fuzz_failure& f);
+
+}  // namespace shadowproof

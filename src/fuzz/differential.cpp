@@ -1,0 +1,373 @@
+// Differential fuzzing against the exact oracle, shrinking, and metamorphic relations.
+#include "shadowproof/fuzz/differential.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <set>
+#include <sstream>
+
+#include "shadowproof/core/error.h"
+#include "shadowproof/core/number.h"
+#include "shadowproof/fuzz/shrink.h"
+#include "shadowproof/core/ulp.h"
+
+namespace shadowproof {
+namespace {
+
+bool is_supported(operation op) {
+  return op == operation::shadow_matrix || op == operation::shadow_point || op == operation::reflection_matrix;
+}
+
+bool representable(double x, scalar_type type) {
+  if (!std::isfinite(x)) return false;
+  return type == scalar_type::f64 || static_cast<double>(static_cast<float>(x)) == x;
+}
+
+std::string base_family(const std::string& family) { return family.substr(0, family.find_first_of("+*")); }
+
+input_class class_of_family(const std::string& family, const std::string& base) {
+  if (family.find("+ulp") != std::string::npos || family.find("+2^-") != std::string::npos)
+    return input_class::near_degenerate;
+  return (base == "regular" || base == "directional_regular" || base == "axis_aligned") ? input_class::regular
+                                                                                      : input_class::degenerate;
+}
+
+std::vector<double> run(const implementation& impl, const test_case& c) {
+  std::vector<double> out(signature(c.op).output_count);
+  impl.run(c.inputs.data(), out.data());
+  return out;
+}
+
+// The failure kinds a grade shows, most severe first.
+std::vector<failure_kind> kinds_of(const case_grade& g, std::uint64_t threshold) {
+  std::vector<failure_kind> k;
+  if (g.nonfinite > 0) k.push_back(failure_kind::nonfinite);
+  if (g.garbage > 0) k.push_back(failure_kind::garbage);
+  if (g.misclassified) k.push_back(failure_kind::misclassified);
+  if (g.max_ulps >= threshold) k.push_back(failure_kind::ulps);
+  return k;
+}
+
+// "Fails the same way": the same kind and, for a misclassification, the same pair of classes.
+bool same_failure(const case_grade& a, const case_grade& b, failure_kind kind, std::uint64_t threshold) {
+  const auto kinds = kinds_of(b, threshold);
+  if (std::find(kinds.begin(), kinds.end(), kind) == kinds.end()) return false;
+  if (kind == failure_kind::misclassified) return a.exact_class == b.exact_class && a.got_class == b.got_class;
+  return true;
+}
+
+// A plane needs a non-zero normal and a light a non-zero entry; the implementation's declared
+// requirements (unit normal, w fixed) are kept by pinning those inputs while shrinking.
+bool valid_inputs(const test_case& c) {
+  const auto& x = c.inputs;
+  if (x[0] == 0 && x[1] == 0 && x[2] == 0) return false;
+  if (c.op != operation::reflection_matrix && x[4] == 0 && x[5] == 0 && x[6] == 0 && x[7] == 0) return false;
+  return std::all_of(x.begin(), x.end(), [&](double v) { return representable(v, c.type); });
+}
+
+std::vector<bool> pinned_inputs(const implementation& impl) {
+  std::vector<bool> keep(signature(impl.op).input_count, false);
+  if (impl.conv.unit_normal) keep[0] = keep[1] = keep[2] = true;
+  if (impl.op != operation::reflection_matrix && (impl.conv.directional_only || impl.conv.point_light_only))
+    keep[7] = true;
+  return keep;
+}
+
+// ---- metamorphic relations ---------------------------------------------------------------
+
+struct transformed {
+  test_case input;
+  // Maps the original outputs to the expected outputs of the transformed input, exactly;
+  // nothing when the expectation is not representable.
+  std::function<std::optional<std::vector<double>>(const std::vector<double>&)> expect;
+};
+
+std::optional<double> exact_sum(double a, double b, scalar_type type) {
+  const rational s = exact_value(a) + exact_value(b);
+  const double d = type == scalar_type::f32 ? static_cast<double>(to_nearest_float(s)) : to_nearest_double(s);
+  if (!std::isfinite(d) || exact_value(d) != s) return std::nullopt;
+  return d;
+}
+
+std::optional<double> round_to_type(const rational& q, scalar_type type) {
+  const double d = type == scalar_type::f32 ? static_cast<double>(to_nearest_float(q)) : to_nearest_double(q);
+  if (!std::isfinite(d)) return std::nullopt;
+  return d;
+}
+
+std::optional<transformed> transform(const implementation& impl, const test_case& c, const std::string& relation) {
+  const bool matrix = signature(c.op).matrix_size == 4;
+  const bool up_to_scale = impl.conv.homogeneous || impl.conv.normalises_plane;
+  transformed t{c, {}};
+  auto& in = t.input.inputs;
+  auto scaled_outputs = [matrix](double factor) {
+    return [matrix, factor](const std::vector<double>& out) -> std::optional<std::vector<double>> {
+      if (!matrix) return out;
+      std::vector<double> e(out);
+      for (double& x : e) x *= factor;  // exact unless it overflows, which the caller sees as inf
+      return e;
+    };
+  };
+  if (relation == "scale_plane") {
+    if (matrix && up_to_scale) return std::nullopt;
+    if (impl.conv.unit_normal) return std::nullopt;
+    for (int i = 0; i < 4; ++i) in[i] *= 2;
+    // The shadow matrix is linear in P; the mirror and the image do not depend on P's scale.
+    t.expect = scaled_outputs(c.op == operation::shadow_matrix ? 2.0 : 1.0);
+  } else if (relation == "scale_light") {
+    if (c.op == operation::reflection_matrix || impl.conv.point_light_only) return std::nullopt;
+    if (matrix && up_to_scale) return std::nullopt;
+    for (int i = 4; i < 8; ++i) in[i] *= 2;
+    t.expect = scaled_outputs(2.0);
+  } else if (relation == "swap_xy") {
+    auto swap_at = [&](std::size_t i) { std::swap(in[i], in[i + 1]); };
+    swap_at(0);
+    if (c.op != operation::reflection_matrix) swap_at(4);
+    if (c.op == operation::shadow_point) swap_at(8);
+    t.expect = [matrix](const std::vector<double>& out) -> std::optional<std::vector<double>> {
+      std::vector<double> e(out);
+      if (!matrix) {
+        std::swap(e[0], e[1]);
+        return e;
+      }
+      // Conjugating by the x/y swap exchanges rows 0,1 and columns 0,1: the same index map in
+      // row-major and column-major storage, and for row or column vectors.
+      auto perm = [](std::size_t i) { return i == 0 ? 1 : (i == 1 ? 0 : i); };
+      for (std::size_t r = 0; r < 4; ++r)
+        for (std::size_t k = 0; k < 4; ++k) e[r * 4 + k] = out[perm(r) * 4 + perm(k)];
+      return e;
+    };
+  } else if (relation == "translate") {
+    if (c.op != operation::shadow_point) return std::nullopt;
+    const double shift[3] = {1, -2, 3};
+    // Plane: d' = d − n·t; light: position + w t; point: + t. All must stay exact.
+    rational d = exact_value(in[3]);
+    for (int i = 0; i < 3; ++i) d -= exact_value(in[i]) * rational(shift[i]);
+    const auto new_d = round_to_type(d, c.type);
+    if (!new_d || exact_value(*new_d) != d) return std::nullopt;
+    in[3] = *new_d;
+    for (int i = 0; i < 3; ++i) {
+      const auto l = exact_sum(in[4 + i], in[7] * shift[i], c.type);
+      const auto p = exact_sum(in[8 + i], shift[i], c.type);
+      if (!l || !p) return std::nullopt;
+      in[4 + i] = *l;
+      in[8 + i] = *p;
+    }
+    const scalar_type type = c.type;
+    t.expect = [shift, type](const std::vector<double>& out) -> std::optional<std::vector<double>> {
+      std::vector<double> e(out);
+      for (int i = 0; i < 3; ++i) {
+        if (!std::isfinite(out[i])) return std::nullopt;
+        const auto r = round_to_type(exact_value(out[i]) + rational(shift[i]), type);
+        if (!r) return std::nullopt;
+        e[i] = *r;
+      }
+      return e;
+    };
+  } else {
+    return std::nullopt;
+  }
+  if (!valid_inputs(t.input)) return std::nullopt;
+  return t;
+}
+
+template <class T>
+std::uint64_t disagreement(const std::vector<double>& expected, const std::vector<double>& got) {
+  std::uint64_t worst = 0;
+  for (std::size_t i = 0; i < got.size(); ++i) {
+    const bool fe = std::isfinite(expected[i]), fg = std::isfinite(got[i]);
+    if (fe != fg) return std::numeric_limits<std::uint64_t>::max();
+    if (!fe) {
+      if (std::isnan(expected[i]) != std::isnan(got[i]) || (!std::isnan(got[i]) && expected[i] != got[i]))
+        return std::numeric_limits<std::uint64_t>::max();
+      continue;
+    }
+    worst = std::max(worst, ulp_distance(static_cast<T>(expected[i]), static_cast<T>(got[i])));
+  }
+  return worst;
+}
+
+}  // namespace
+
+std::string_view to_string(failure_kind k) {
+  switch (k) {
+    case failure_kind::nonfinite: return "nonfinite";
+    case failure_kind::garbage: return "garbage";
+    case failure_kind::misclassified: return "misclassified";
+    case failure_kind::ulps: return "ulps";
+    case failure_kind::metamorphic: return "metamorphic";
+  }
+  return "unknown";
+}
+
+std::vector<std::string> metamorphic_relations(operation op) {
+  if (op == operation::shadow_point) return {"scale_plane", "scale_light", "swap_xy", "translate"};
+  if (op == operation::shadow_matrix) return {"scale_plane", "scale_light", "swap_xy"};
+  return {"scale_plane", "swap_xy"};
+}
+
+std::optional<std::uint64_t> metamorphic_violation(const implementation& impl, const test_case& c,
+                                                   const std::string& relation, std::uint64_t threshold) {
+  const auto t = transform(impl, c, relation);
+  if (!t) return std::nullopt;
+  const auto expected = t->expect(run(impl, c));
+  if (!expected) return std::nullopt;
+  const auto got = run(impl, t->input);
+  const std::uint64_t d = c.type == scalar_type::f32 ? disagreement<float>(*expected, got)
+                                                     : disagreement<double>(*expected, got);
+  if (d < threshold) return std::nullopt;
+  return d;
+}
+
+test_case make_fuzz_case(const generated_case<double>& g, const implementation& impl, std::uint64_t id) {
+  if (!is_supported(impl.op))
+    throw error("fuzz.unsupported_operation", "fuzzing supports shadow-matrix, shadow-point and reflection-matrix, not " +
+                                                  std::string(to_string(impl.op)) + " (" + impl.name + ")");
+  test_case c;
+  c.id = id;
+  c.op = impl.op;
+  c.type = impl.type;
+  c.cls = class_of_family(g.family, base_family(g.family));
+  c.inputs.assign(g.plane.begin(), g.plane.end());
+  if (impl.op != operation::reflection_matrix) c.inputs.insert(c.inputs.end(), g.light.begin(), g.light.end());
+  if (impl.op == operation::shadow_point) c.inputs.insert(c.inputs.end(), g.point.begin(), g.point.end());
+  return c;
+}
+
+fuzz_report run_fuzz(const implementation& impl, const fuzz_settings& settings,
+                     const std::function<void(std::size_t, std::size_t)>& progress) {
+  fuzz_report report;
+  report.impl = impl.name;
+  prng_source src(settings.seed);
+  const generator_requirements req{impl.conv.unit_normal, impl.conv.directional_only, impl.conv.point_light_only};
+  const auto relations = settings.metamorphic ? metamorphic_relations(impl.op) : std::vector<std::string>{};
+  const std::size_t case_limit = settings.cases.value_or(settings.seconds ? std::numeric_limits<std::size_t>::max() : 10000);
+  const auto start = std::chrono::steady_clock::now();
+  auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+  double last_progress = 0;
+  std::set<std::string> seen;  // (kind, family, relation) already recorded
+  const auto keep = pinned_inputs(impl);
+  const bool single = impl.type == scalar_type::f32;
+
+  auto generate = [&]() {
+    if (single) {
+      const auto f = generate_shadow_case<float>(src, req);
+      generated_case<double> d;
+      std::copy(f.plane.begin(), f.plane.end(), d.plane.begin());
+      std::copy(f.light.begin(), f.light.end(), d.light.begin());
+      std::copy(f.point.begin(), f.point.end(), d.point.begin());
+      d.family = f.family;
+      return d;
+    }
+    return generate_shadow_case<double>(src, req);
+  };
+
+  for (std::size_t n = 0; n < case_limit; ++n) {
+    if (settings.seconds && (n % 64 == 0) && elapsed() >= *settings.seconds) break;
+    if (progress && (n % 64 == 0) && elapsed() - last_progress >= 1.0) {
+      last_progress = elapsed();
+      progress(n, report.failures.size());
+    }
+    const auto g = generate();
+    const test_case c = make_fuzz_case(g, impl, n);
+    ++report.cases;
+    const auto out = run(impl, c);
+    const case_grade grade = grade_case(c, impl.conv, out.data());
+    const std::string family = base_family(g.family);
+
+    // Shrinks the case while `fails_on` holds for the simpler inputs and records the failure.
+    auto record = [&](failure_kind kind, const std::string& relation, double bits,
+                      const std::function<bool(const test_case&)>& fails_on) {
+      auto still_fails = [&](const std::vector<double>& inputs) {
+        test_case t = c;
+        t.inputs = inputs;
+        if (!valid_inputs(t)) return false;
+        try {
+          return fails_on(t);
+        } catch (const error&) {
+          return false;
+        }
+      };
+      const auto s = shrink_inputs(c.inputs, single, still_fails, keep, settings.shrink_budget);
+      fuzz_failure f;
+      f.kind = kind;
+      f.family = g.family;
+      f.relation = relation;
+      f.original = c;
+      f.shrunk = c;
+      f.shrunk.inputs = s.inputs;
+      f.original_grade = grade;
+      const auto shrunk_out = run(impl, f.shrunk);
+      f.shrunk_grade = grade_case(f.shrunk, impl.conv, shrunk_out.data());
+      f.bits = bits;
+      f.bits_before = s.bits_before;
+      f.bits_after = s.bits_after;
+      f.threshold = settings.ulps_threshold;
+      report.failures.push_back(std::move(f));
+    };
+
+    for (failure_kind kind : kinds_of(grade, settings.ulps_threshold)) {
+      ++report.failing_cases[std::string(to_string(kind))];
+      // Misclassifications are told apart by the pair of classes (shadow taken for an
+      // anti-shadow is a different bug from a shadow taken for a point on the receiver).
+      std::string key = std::string(to_string(kind)) + "/" + family;
+      if (kind == failure_kind::misclassified && grade.exact_class && grade.got_class)
+        key = "misclassified/" + std::string(to_string(*grade.exact_class)) + "->" + std::string(to_string(*grade.got_class));
+      if (!seen.insert(key).second) continue;
+      record(kind, "", grade.max_bits, [&](const test_case& t) {
+        const auto o = run(impl, t);
+        return same_failure(grade, grade_case(t, impl.conv, o.data()), kind, settings.ulps_threshold);
+      });
+    }
+
+    for (const auto& relation : relations) {
+      const auto v = metamorphic_violation(impl, c, relation, settings.ulps_threshold);
+      if (!v) continue;
+      report.metamorphic_max_ulps[relation] = std::max(report.metamorphic_max_ulps[relation], *v);
+      ++report.failing_cases["metamorphic"];
+      if (!seen.insert("metamorphic/" + family + "/" + relation).second) continue;
+      record(failure_kind::metamorphic, relation,
+             bits_of_error(*v == std::numeric_limits<std::uint64_t>::max() ? *v - 1 : *v), [&](const test_case& t) {
+               return metamorphic_violation(impl, t, relation, settings.ulps_threshold).has_value();
+             });
+    }
+  }
+  if (progress) progress(report.cases, report.failures.size());
+  return report;
+}
+
+std::string catch2_regression_test(const implementation& impl, const fuzz_failure& f) {
+  std::ostringstream s;
+  const auto& c = f.shrunk;
+  s << "// " << impl.name << ": " << to_string(f.kind) << (f.relation.empty() ? "" : " (" + f.relation + ")")
+    << " on a " << base_family(f.family) << " case, shrunk from " << f.bits_before << " to " << f.bits_after
+    << " bits.\n";
+  s << "TEST_CASE(\"fuzz regression: " << impl.name << " " << to_string(f.kind)
+    << (f.relation.empty() ? "" : " " + f.relation) << " on " << base_family(f.family) << "\", \"[fuzz][regression]\") {\n";
+  s << "  const auto& impl = shadowproof::find_builtin_implementation(\"" << impl.name << "\");\n"
+    << "  const shadowproof::test_case c{0, impl.op, impl.type, shadowproof::input_class::regular, {";
+  for (std::size_t i = 0; i < c.inputs.size(); ++i) s << (i ? ", " : "") << hex_string(c.inputs[i]);
+  s << "}};\n";
+  if (f.kind == failure_kind::metamorphic) {
+    s << "  CHECK(shadowproof::metamorphic_violation(impl, c, \"" << f.relation << "\", " << f.threshold << "u).has_value());\n";
+  } else {
+    s << "  const auto g = shadowproof::run_and_grade(impl, {c}).front();\n";
+    switch (f.kind) {
+      case failure_kind::nonfinite: s << "  CHECK(g.nonfinite > 0);\n"; break;
+      case failure_kind::garbage: s << "  CHECK(g.garbage > 0);\n"; break;
+      case failure_kind::misclassified:
+        s << "  CHECK(g.misclassified);\n";
+        if (f.shrunk_grade.exact_class && f.shrunk_grade.got_class)
+          s << "  CHECK(shadowproof::to_string(*g.exact_class) == \"" << to_string(*f.shrunk_grade.exact_class) << "\");\n"
+            << "  CHECK(shadowproof::to_string(*g.got_class) == \"" << to_string(*f.shrunk_grade.got_class) << "\");\n";
+        break;
+      default: s << "  CHECK(g.max_ulps >= " << f.threshold << "u);\n"; break;
+    }
+  }
+  s << "}\n";
+  return s.str();
+}
+
+}  // namespace shadowproof
