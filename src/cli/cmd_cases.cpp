@@ -24,16 +24,16 @@ struct cases_options {
 int run_cases(const cases_options& o) {
   const auto op = operation_from_string(o.op);
   if (!op)
-    throw error("cases.unknown_op",
+    throw error(errc::verify_unknown_op,
                 "unknown --op '" + o.op +
                     "'; expected shadow-matrix, shadow-point, reflection-matrix, ortho, frustum or normal-matrix");
   const auto type = scalar_type_from_string(o.type);
-  if (!type) throw error("cases.unknown_type", "unknown --type '" + o.type + "'; expected f32 or f64");
+  if (!type) throw error(errc::verify_unknown_type, "unknown --type '" + o.type + "'; expected f32 or f64");
   std::optional<input_class> cls;
   if (!o.cls.empty()) {
     cls = input_class_from_string(o.cls);
     if (!cls)
-      throw error("cases.unknown_class",
+      throw error(errc::verify_unknown_class,
                   "unknown --class '" + o.cls + "'; expected regular, near-degenerate or degenerate");
   }
   conventions requirements;

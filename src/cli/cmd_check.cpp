@@ -127,23 +127,23 @@ int run_check(const check_options& o) {
     for (const auto& impl : all) std::cout << impl.name << '\n';
     return 0;
   }
-  if (o.impl.empty()) throw error("check.no_impl", "give --impl NAME (or --impl all); --list shows the names");
+  if (o.impl.empty()) throw error(errc::check_no_impl, "give --impl NAME (or --impl all); --list shows the names");
   std::optional<operation> op_filter;
   if (!o.op.empty()) {
     op_filter = operation_from_string(o.op);
     if (!op_filter)
-      throw error("check.unknown_op", "unknown --op '" + o.op +
+      throw error(errc::verify_unknown_op, "unknown --op '" + o.op +
                                           "'; expected shadow-matrix, shadow-point, reflection-matrix, ortho, frustum or normal-matrix");
   }
-  if (o.cases == 0) throw error("check.cases", "--cases must be at least 1");
+  if (o.cases == 0) throw error(errc::check_cases, "--cases must be at least 1");
   std::vector<const implementation*> chosen;
   for (const auto& impl : all)
     if ((o.impl == "all" || impl.name == o.impl) && (!op_filter || impl.op == *op_filter)) chosen.push_back(&impl);
   if (chosen.empty()) {
     bool known = o.impl == "all";
     for (const auto& impl : all) known = known || impl.name == o.impl;
-    if (!known) throw error("check.unknown_impl", "no implementation named '" + o.impl + "' (see --list)");
-    throw error("check.unknown_impl", "implementation '" + o.impl + "' does not compute --op " + o.op);
+    if (!known) throw error(errc::verify_unknown_impl, "no implementation named '" + o.impl + "' (see --list)");
+    throw error(errc::verify_unknown_impl, "implementation '" + o.impl + "' does not compute --op " + o.op);
   }
 
   std::vector<impl_run> runs;

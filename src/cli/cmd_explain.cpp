@@ -44,24 +44,24 @@ explanation explain_perspective_command(const explain_options& o, const number_l
   if (window_given == 0) {
     // Seed 002's N(α, β): the 45° frustum, OpenGL depth.
     if (o.convention_option->count() > 0 || o.infinite_far)
-      throw error("cli.unused_option",
+      throw error(errc::cli_unused_option,
                   "--convention and --infinite-far apply to the frustum form: give --left, --right, "
                   "--bottom and --top too, or leave them out for seed 002's N(α, β)");
     if (o.far_option->count() == 0)
-      throw error("cli.missing_option", "explain perspective needs --far");
+      throw error(errc::cli_missing_option, "explain perspective needs --far");
     return explain_perspective_normalization(n, parse_flag_number(o.far_text, "--far", limits));
   }
   if (window_given != o.window.size())
-    throw error("cli.missing_option", "the frustum form needs all of --left, --right, --bottom, --top; missing " +
+    throw error(errc::cli_missing_option, "the frustum form needs all of --left, --right, --bottom, --top; missing " +
                                           missing);
   const depth_convention c = parse_depth_convention(o.convention_text);
   rational f = 0;
   if (o.infinite_far) {
     if (o.far_option->count() > 0)
-      throw error("cli.unused_option", "--far and --infinite-far contradict each other; give one of them");
+      throw error(errc::cli_unused_option, "--far and --infinite-far contradict each other; give one of them");
   } else {
     if (o.far_option->count() == 0)
-      throw error("cli.missing_option", "explain perspective needs --far (or --infinite-far)");
+      throw error(errc::cli_missing_option, "explain perspective needs --far (or --infinite-far)");
     f = parse_flag_number(o.far_text, "--far", limits);
   }
   return explain_frustum(parse_flag_number(o.left_text, "--left", limits),
@@ -87,7 +87,7 @@ int run_explain(const explain_options& o, const global_options& g) {
     for (std::size_t i = 0; i < 16; ++i) M(i / 4, i % 4) = m[i];
     e = explain_normal_matrix(M);
   } else {
-    throw error("cli.missing_option", "explain needs a topic: shadow, reflect, perspective or normal-matrix");
+    throw error(errc::cli_missing_option, "explain needs a topic: shadow, reflect, perspective or normal-matrix");
   }
   std::cout << to_text(e);
   return 0;

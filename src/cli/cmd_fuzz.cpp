@@ -83,14 +83,14 @@ int run_fuzz_command(const fuzz_options& o) {
   fuzz_settings s;
   if (o.seconds > 0) s.seconds = o.seconds;
   if (o.cases > 0) s.cases = o.cases;
-  if (!s.seconds && !s.cases) throw error("fuzz.no_budget", "give --seconds S or --cases N");
+  if (!s.seconds && !s.cases) throw error(errc::fuzz_no_budget, "give --seconds S or --cases N");
   s.seed = o.seed;
   s.ulps_threshold = o.max_ulps;
   s.metamorphic = !o.no_metamorphic;
   if (!o.out_dir.empty()) {  // fail before a long run, not after it
     std::error_code ec;
     std::filesystem::create_directories(o.out_dir, ec);
-    if (ec) throw error("io.cannot_write", "cannot create the directory " + o.out_dir + ": " + ec.message());
+    if (ec) throw error(errc::io_cannot_write, "cannot create the directory " + o.out_dir + ": " + ec.message());
   }
   const bool terminal = isatty(STDERR_FILENO) == 1;
   const fuzz_report r = run_fuzz(impl, s, [&](std::size_t cases, std::size_t failures) {

@@ -30,7 +30,7 @@ struct grade_options {
 
 std::vector<std::string> read_lines(const std::string& path, const char* what) {
   std::ifstream f(path);
-  if (!f) throw error("grade.file", std::string("cannot read the ") + what + " file '" + path + "'");
+  if (!f) throw error(errc::grade_file, std::string("cannot read the ") + what + " file '" + path + "'");
   std::vector<std::string> lines;
   std::string line;
   while (std::getline(f, line))
@@ -42,13 +42,13 @@ int run_grade(const grade_options& o) {
   conventions conv;
   if (o.layout == "row-major") conv.storage = storage_order::row_major;
   else if (o.layout == "column-major") conv.storage = storage_order::column_major;
-  else throw error("grade.layout", "unknown --layout '" + o.layout + "'; expected row-major or column-major");
+  else throw error(errc::grade_layout, "unknown --layout '" + o.layout + "'; expected row-major or column-major");
   if (o.vectors == "column") conv.vectors = vector_side::column;
   else if (o.vectors == "row") conv.vectors = vector_side::row;
-  else throw error("grade.vectors", "unknown --vectors '" + o.vectors + "'; expected column or row");
+  else throw error(errc::grade_vectors, "unknown --vectors '" + o.vectors + "'; expected column or row");
   if (o.light == "towards-light") conv.light = light_sign::towards_light;
   else if (o.light == "along-rays") conv.light = light_sign::along_rays;
-  else throw error("grade.light", "unknown --light '" + o.light + "'; expected towards-light or along-rays");
+  else throw error(errc::grade_light, "unknown --light '" + o.light + "'; expected towards-light or along-rays");
   conv.homogeneous = o.homogeneous;
   conv.depth = parse_depth_convention(o.depth);
 
@@ -58,7 +58,7 @@ int run_grade(const grade_options& o) {
   for (std::size_t i = 0; i < case_lines.size(); ++i) {
     cases.push_back(parse_case_line(case_lines[i], i + 1));
     if (!index.emplace(cases.back().id, i).second)
-      throw error("grade.duplicate_id", o.cases_path + " line " + std::to_string(i + 1) + ": case id " +
+      throw error(errc::grade_duplicate_id, o.cases_path + " line " + std::to_string(i + 1) + ": case id " +
                                             std::to_string(cases.back().id) + " appears twice");
   }
   const auto output_lines = read_lines(o.outputs_path, "outputs");
@@ -71,16 +71,16 @@ int run_grade(const grade_options& o) {
     {
       const auto probe = nlohmann::json::parse(output_lines[i], nullptr, false);
       if (probe.is_discarded() || !probe.is_object() || !probe.contains("id") || !probe["id"].is_number_unsigned())
-        throw error("protocol.output", o.outputs_path + " line " + std::to_string(i + 1) +
+        throw error(errc::protocol_output, o.outputs_path + " line " + std::to_string(i + 1) +
                                            ": expected {\"id\": <case id>, \"output\": [...]}");
       id = probe["id"].get<std::uint64_t>();
     }
     const auto it = index.find(id);
     if (it == index.end())
-      throw error("grade.unknown_id", o.outputs_path + " line " + std::to_string(i + 1) + ": no case with id " +
+      throw error(errc::grade_unknown_id, o.outputs_path + " line " + std::to_string(i + 1) + ": no case with id " +
                                           std::to_string(id) + " in " + o.cases_path);
     if (seen[id])
-      throw error("grade.duplicate_id", o.outputs_path + " line " + std::to_string(i + 1) + ": id " +
+      throw error(errc::grade_duplicate_id, o.outputs_path + " line " + std::to_string(i + 1) + ": id " +
                                             std::to_string(id) + " graded twice");
     seen[id] = true;
     const test_case& c = cases[it->second];

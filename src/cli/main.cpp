@@ -1,5 +1,5 @@
 // The shadowproof executable: dispatches to the registered subcommands.
-// Exit codes: 0 success, 1 a check failed, 2 bad input or usage.
+// Exit codes: 0 success, 1 a check failed, 2 bad input or usage, 3 an internal error (a bug).
 #include <algorithm>
 #include <iostream>
 
@@ -73,6 +73,9 @@ int main(int argc, char** argv) {
   } catch (const error& e) {
     std::cerr << "shadowproof: " << e.what() << '\n';
     return 2;
+  } catch (const internal_error& e) {
+    std::cerr << "shadowproof: " << e.what() << '\n';
+    return 3;
   } catch (const std::bad_alloc&) {
     std::cerr << "shadowproof: out of memory; lower the input sizes or --max-bits\n";
     return 2;

@@ -56,7 +56,7 @@ rational parse_flag_number(const std::string& text, const std::string& flag, con
   try {
     return parse_number(text, limits);
   } catch (const error& e) {
-    throw error(e.id(), flag + ": " + without_prefix(e));
+    throw error(e.code(), flag + ": " + without_prefix(e));
   }
 }
 
@@ -88,21 +88,21 @@ projection build_projection(const projection_options& o, const number_limits& li
   const std::string& kind = o.kind;
   const bool games101 = kind == "games101";
   if (games101 && o.convention_option->count() > 0)
-    throw error("cli.unused_option",
+    throw error(errc::cli_unused_option,
                 "--convention does not apply to games101, whose NDC depth is fixed (near +1, far -1)");
   if (o.infinite_far && kind != "frustum" && kind != "perspective")
-    throw error("cli.unused_option", "--infinite-far applies to frustum and perspective only, not " + kind);
+    throw error(errc::cli_unused_option, "--infinite-far applies to frustum and perspective only, not " + kind);
   if (o.infinite_far && o.given.at("--far")->count() > 0)
-    throw error("cli.unused_option", "--far and --infinite-far exclude each other");
+    throw error(errc::cli_unused_option, "--far and --infinite-far exclude each other");
 
   const auto needed = needed_flags(kind, o.infinite_far);
   const std::set<std::string> needed_set(needed.begin(), needed.end());
   for (const auto& [flag, option] : o.given)
     if (option->count() > 0 && needed_set.count(flag) == 0)
-      throw error("cli.unused_option", flag + " does not apply to " + kind);
+      throw error(errc::cli_unused_option, flag + " does not apply to " + kind);
   std::map<std::string, rational> x;
   for (const auto& flag : needed) {
-    if (o.given.at(flag)->count() == 0) throw error("cli.missing_option", kind + " needs " + flag);
+    if (o.given.at(flag)->count() == 0) throw error(errc::cli_missing_option, kind + " needs " + flag);
     x[flag] = parse_flag_number(o.numbers.at(flag), flag, limits);
   }
   auto v = [&](const char* flag) -> const rational& { return x.at(flag); };

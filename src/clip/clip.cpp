@@ -230,7 +230,7 @@ std::vector<std::array<std::size_t, 3>> triangulate(const std::vector<point2>& p
           idx.erase(idx.begin() + static_cast<std::ptrdiff_t>(i));
           dropped = true;
         }
-      if (!dropped) throw error("internal.triangulation", "ear clipping found no ear");
+      if (!dropped) throw internal_error("ear clipping found no ear");
     }
   }
   if (idx.size() == 3 && sgn(orient2(p[idx[0]], p[idx[1]], p[idx[2]])) > 0)
@@ -385,26 +385,26 @@ void region_builder::validate_sizes() {
     nf += c.faces.size();
     for (std::size_t f = 0; f < c.faces.size(); ++f) {
       if (c.faces[f].size() > lim.max_face_vertices)
-        throw error("scene.too_large", face_name(c, f) + " has " + std::to_string(c.faces[f].size()) +
+        throw error(errc::scene_too_large, face_name(c, f) + " has " + std::to_string(c.faces[f].size()) +
                                            " vertices; at most " + std::to_string(lim.max_face_vertices) + " (raise it with --max-face-vertices)" +
                                            " per face");
       for (std::size_t k = 0; k < c.faces[f].size(); ++k)
         if (c.faces[f][k] >= c.vertices.size())
-          throw error("scene.bad_index", face_name(c, f) + (c.is_polygon ? "" : "/" + std::to_string(k)) +
+          throw error(errc::scene_bad_index, face_name(c, f) + (c.is_polygon ? "" : "/" + std::to_string(k)) +
                                              ": vertex index " + std::to_string(c.faces[f][k]) +
                                              " is out of range (the caster has " +
                                              std::to_string(c.vertices.size()) + " vertices)");
     }
   }
   if (nv > lim.max_vertices)
-    throw error("scene.too_large", "the casters have " + std::to_string(nv) + " vertices; at most " +
+    throw error(errc::scene_too_large, "the casters have " + std::to_string(nv) + " vertices; at most " +
                                        std::to_string(lim.max_vertices) + " (raise it with --max-vertices)");
   if (nf > lim.max_faces)
-    throw error("scene.too_large", "the casters have " + std::to_string(nf) + " faces; at most " +
+    throw error(errc::scene_too_large, "the casters have " + std::to_string(nf) + " faces; at most " +
                                        std::to_string(lim.max_faces) + " (raise it with --max-faces)");
   const auto check_ring = [&](const polygon3& p, const std::string& name) {
     if (p.vertices.size() > lim.max_face_vertices)
-      throw error("scene.too_large", name + " has " + std::to_string(p.vertices.size()) +
+      throw error(errc::scene_too_large, name + " has " + std::to_string(p.vertices.size()) +
                                          " vertices; at most " + std::to_string(lim.max_face_vertices) + " (raise it with --max-face-vertices)");
   };
   check_ring(scene_.receiver.outer, "/receiver/polygon");
@@ -418,18 +418,18 @@ std::vector<point2> chart_ring(const polygon3& ring, const std::string& name, co
   std::vector<point3> v = ring.vertices;
   for (std::size_t i = 0; i < v.size(); ++i)
     if (sgn(P.a() * v[i][0] + P.b() * v[i][1] + P.c() * v[i][2] + P.d()) != 0)
-      throw error("scene.receiver_not_planar",
+      throw error(errc::scene_receiver_not_planar,
                   name + "/" + std::to_string(i) + " is not in the plane of the receiver");
   drop_repeats(v);
   if (v.size() < 3)
-    throw error("scene.empty_polygon", name + " needs at least 3 distinct vertices");
+    throw error(errc::scene_empty_polygon, name + " needs at least 3 distinct vertices");
   std::vector<point2> c;
   for (const auto& p : v) c.push_back(drop_axis(p, k));
   drop_collinear(c, v);
   if (c.size() < 3)
-    throw error("scene.empty_polygon", name + " has zero area (its vertices are collinear)");
+    throw error(errc::scene_empty_polygon, name + " has zero area (its vertices are collinear)");
   if (!is_simple(c))
-    throw error("scene.self_intersecting", name + " is not a simple polygon (its edges cross or touch)");
+    throw error(errc::scene_self_intersecting, name + " is not a simple polygon (its edges cross or touch)");
   if (sgn(signed_area2(c)) < 0) std::reverse(c.begin(), c.end());
   return c;
 }
@@ -450,13 +450,13 @@ void region_builder::build_receiver() {
     cset inside(hp);
     inside.difference(cpolygon(to_cpolygon(r_.receiver_outer)));
     if (!inside.is_empty())
-      throw error("scene.hole_outside_receiver", name + " is not inside /receiver/polygon");
+      throw error(errc::scene_hole_outside_receiver, name + " is not inside /receiver/polygon");
     receiver_.difference(hp);
     std::reverse(ring.begin(), ring.end());
     r_.receiver_holes.push_back(ring);
   }
   if (receiver_.is_empty())
-    throw error("scene.empty_polygon", "the holes cover the whole receiver");
+    throw error(errc::scene_empty_polygon, "the holes cover the whole receiver");
   receiver_edges_ = set_edges(receiver_);
 
   // View box: the receiver's bounding box enlarged by a quarter of its larger side, so the
@@ -592,7 +592,7 @@ void region_builder::process_caster(std::size_t ci) {
     const std::string name = face_name(c, f);
     std::vector<point3> v;
     for (auto i : c.faces[f]) v.push_back(c.vertices[i]);
-    if (v.empty()) throw error("scene.empty_polygon", name + " has no vertices");
+    if (v.empty()) throw error(errc::scene_empty_polygon, name + " has no vertices");
     for (const auto& p : v) {
       const rational t = P_.a() * p[0] + P_.b() * p[1] + P_.c() * p[2] + P_.d();
       const int side = sgn(t) * (light_side == 0 ? 1 : light_side);
@@ -608,7 +608,7 @@ void region_builder::process_caster(std::size_t ci) {
       // Collinear (or a single point): check it really is, then cast it as a segment.
       for (std::size_t i = 2; i < v.size(); ++i)
         if (!is_zero3(cross3(sub3(v[1], v[0]), sub3(v[i], v[0]))))
-          throw error("internal.collinear", name + ": inconsistent collinearity test");
+          throw internal_error(name + ": inconsistent collinearity test");
       if (v.size() >= 3) note(shadow_case::collinear_vertices);
       // The degenerate triangle (lo, hi, hi) clips and projects like any other.
       point3 lo = v[0], hi = v[0];
@@ -622,7 +622,7 @@ void region_builder::process_caster(std::size_t ci) {
     const rational dn = -dot33(n, v[0]);
     for (std::size_t i = 0; i < given.size(); ++i)
       if (sgn(dot33(n, given[i]) + dn) != 0)
-        throw error("scene.caster_not_planar",
+        throw error(errc::scene_caster_not_planar,
                     name + ": vertex " + std::to_string(c.faces[f][i]) +
                         " is not in the plane of the face's other vertices");
     bool in_plane = true;
@@ -634,7 +634,7 @@ void region_builder::process_caster(std::size_t ci) {
     for (const auto& p : v) chart.push_back(drop_axis(p, k));
     if (drop_collinear(chart, v)) note(shadow_case::collinear_vertices);
     if (!is_simple(chart))
-      throw error("scene.self_intersecting", name + " is not a simple polygon (its edges cross or touch)");
+      throw error(errc::scene_self_intersecting, name + " is not a simple polygon (its edges cross or touch)");
     if (sgn(signed_area2(chart)) < 0) {
       std::reverse(chart.begin(), chart.end());
       std::reverse(v.begin(), v.end());
@@ -785,10 +785,10 @@ shadow_region region_builder::run() {
 plane<rational> derived_plane(const scene& s) {
   std::vector<point3> v = s.receiver.outer.vertices;
   drop_repeats(v);
-  if (v.size() < 3) throw error("scene.empty_polygon", "/receiver/polygon needs at least 3 distinct vertices");
+  if (v.size() < 3) throw error(errc::scene_empty_polygon, "/receiver/polygon needs at least 3 distinct vertices");
   const point3 n = plane_normal(v);
   if (is_zero3(n))
-    throw error("scene.empty_polygon", "/receiver/polygon has zero area (its vertices are collinear)");
+    throw error(errc::scene_empty_polygon, "/receiver/polygon has zero area (its vertices are collinear)");
   return plane<rational>{make_vec4<rational>(n[0], n[1], n[2], -dot33(n, v[0]))};
 }
 
@@ -850,21 +850,21 @@ bool shadow_region::has(shadow_case c) const { return std::find(cases.begin(), c
 
 shadow_region compute_shadow_region(const scene& s, const clip_options& options) {
   if (is_zero(s.light_source.l))
-    throw error("geometry.zero_light", "the light (x,y,z,w) must not be (0,0,0,0)");
+    throw zero_light_error();
   region_builder b(s, derived_plane(s), options);
   return b.run();
 }
 
 shadow_region compute_shadow_region(const scene& s, const plane<rational>& P, const clip_options& options) {
   if (sgn(P.a()) == 0 && sgn(P.b()) == 0 && sgn(P.c()) == 0)
-    throw error("geometry.zero_normal", "the receiver plane needs a non-zero normal");
+    throw zero_normal_error();
   if (is_zero(s.light_source.l))
-    throw error("geometry.zero_light", "the light (x,y,z,w) must not be (0,0,0,0)");
+    throw zero_light_error();
   // The given plane must be a multiple of the receiver's own plane.
   for (std::size_t i = 0; i < s.receiver.outer.vertices.size(); ++i) {
     const auto& v = s.receiver.outer.vertices[i];
     if (sgn(P.a() * v[0] + P.b() * v[1] + P.c() * v[2] + P.d()) != 0)
-      throw error("scene.receiver_not_in_plane", "/receiver/polygon/" + std::to_string(i) + " is not in the given plane");
+      throw error(errc::scene_receiver_not_in_plane, "/receiver/polygon/" + std::to_string(i) + " is not in the given plane");
   }
   region_builder b(s, P, options);
   return b.run();

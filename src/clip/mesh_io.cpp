@@ -14,8 +14,8 @@ namespace shadowproof {
 
 namespace {
 
-[[noreturn]] void mesh_fail(const std::string& id, const std::string& what, std::size_t line, const std::string& msg) {
-  throw error("scene." + id, what + " line " + std::to_string(line) + ": " + msg);
+[[noreturn]] void mesh_fail(errc code, const std::string& what, std::size_t line, const std::string& msg) {
+  throw error(code, what + " line " + std::to_string(line) + ": " + msg);
 }
 
 // Text from a file shown in a message: at most 40 characters, control and non-ASCII bytes as
@@ -41,14 +41,14 @@ rational mesh_number(const std::string& text, const std::string& what, std::size
   try {
     return parse_number(text, limits.numbers);
   } catch (const error& e) {
-    mesh_fail("bad_number", what, line, "\"" + printable(text) + "\" is not a valid number: " + e.what());
+    mesh_fail(errc::scene_bad_number, what, line, "\"" + printable(text) + "\" is not a valid number: " + e.what());
   }
 }
 
 std::size_t mesh_count(const std::string& text, const std::string& what, std::size_t line, const char* name) {
   if (text.empty() || !std::all_of(text.begin(), text.end(), [](unsigned char c) { return std::isdigit(c); }) ||
       text.size() > 12)
-    mesh_fail("mesh_malformed", what, line, std::string("expected a non-negative ") + name + ", found \"" + printable(text) + "\"");
+    mesh_fail(errc::scene_mesh_malformed, what, line, std::string("expected a non-negative ") + name + ", found \"" + printable(text) + "\"");
   return std::stoull(text);
 }
 
@@ -74,19 +74,19 @@ caster read_off(std::istream& in, const std::string& what, const scene_limits& l
   }
   std::size_t pos = 0;
   const auto next = [&](const char* expected) -> const std::pair<std::string, std::size_t>& {
-    if (pos >= tokens.size()) mesh_fail("mesh_malformed", what, n, std::string("unexpected end of file, expected ") + expected);
+    if (pos >= tokens.size()) mesh_fail(errc::scene_mesh_malformed, what, n, std::string("unexpected end of file, expected ") + expected);
     return tokens[pos++];
   };
   const auto& head = next("\"OFF\"");
-  if (head.first != "OFF") mesh_fail("mesh_malformed", what, head.second, "an OFF file starts with \"OFF\", found \"" + printable(head.first) + "\"");
+  if (head.first != "OFF") mesh_fail(errc::scene_mesh_malformed, what, head.second, "an OFF file starts with \"OFF\", found \"" + printable(head.first) + "\"");
   const auto& a = next("the vertex count");
   const std::size_t nv = mesh_count(a.first, what, a.second, "vertex count");
   const auto& b = next("the face count");
   const std::size_t nf = mesh_count(b.first, what, b.second, "face count");
   const auto& c = next("the edge count");
   mesh_count(c.first, what, c.second, "edge count");
-  if (nv > limits.max_vertices) mesh_fail("too_large", what, a.second, std::to_string(nv) + " vertices; at most " + std::to_string(limits.max_vertices) + " (raise it with --max-vertices)");
-  if (nf > limits.max_faces) mesh_fail("too_large", what, b.second, std::to_string(nf) + " faces; at most " + std::to_string(limits.max_faces) + " (raise it with --max-faces)");
+  if (nv > limits.max_vertices) mesh_fail(errc::scene_too_large, what, a.second, std::to_string(nv) + " vertices; at most " + std::to_string(limits.max_vertices) + " (raise it with --max-vertices)");
+  if (nf > limits.max_faces) mesh_fail(errc::scene_too_large, what, b.second, std::to_string(nf) + " faces; at most " + std::to_string(limits.max_faces) + " (raise it with --max-faces)");
   caster m;
   m.name = what;
   m.vertices.reserve(nv);
@@ -102,15 +102,15 @@ caster read_off(std::istream& in, const std::string& what, const scene_limits& l
     const auto& t = next("a face");
     const std::size_t line_no = t.second;
     const std::size_t k = mesh_count(t.first, what, line_no, "face size");
-    if (k < 3) mesh_fail("empty_polygon", what, line_no, "face " + std::to_string(f) + " has " + std::to_string(k) + " vertices; at least 3");
-    if (k > limits.max_face_vertices) mesh_fail("too_large", what, line_no, "face " + std::to_string(f) + " has more than " + std::to_string(limits.max_face_vertices) + " vertices (raise it with --max-face-vertices)");
+    if (k < 3) mesh_fail(errc::scene_empty_polygon, what, line_no, "face " + std::to_string(f) + " has " + std::to_string(k) + " vertices; at least 3");
+    if (k > limits.max_face_vertices) mesh_fail(errc::scene_too_large, what, line_no, "face " + std::to_string(f) + " has more than " + std::to_string(limits.max_face_vertices) + " vertices (raise it with --max-face-vertices)");
     std::vector<std::size_t> face;
     for (std::size_t j = 0; j < k; ++j) {
       const auto& v = next("a vertex index");
       const std::size_t idx = mesh_count(v.first, what, v.second, "vertex index");
-      if (idx >= nv) mesh_fail("bad_index", what, v.second, "face " + std::to_string(f) + ": vertex index " + std::to_string(idx) + " is out of range (" + std::to_string(nv) + " vertices)");
+      if (idx >= nv) mesh_fail(errc::scene_bad_index, what, v.second, "face " + std::to_string(f) + ": vertex index " + std::to_string(idx) + " is out of range (" + std::to_string(nv) + " vertices)");
       if (std::find(face.begin(), face.end(), idx) != face.end())
-        mesh_fail("repeated_index", what, v.second, "face " + std::to_string(f) + ": vertex index " + std::to_string(idx) + " appears twice");
+        mesh_fail(errc::scene_repeated_index, what, v.second, "face " + std::to_string(f) + ": vertex index " + std::to_string(idx) + " appears twice");
       face.push_back(idx);
     }
     m.faces.push_back(std::move(face));
@@ -130,18 +130,18 @@ caster read_obj(std::istream& in, const std::string& what, const scene_limits& l
     const auto w = words(line);
     if (w.empty()) continue;
     if (w[0] == "v") {
-      if (w.size() != 4 && w.size() != 5) mesh_fail("mesh_malformed", what, n, "a vertex is \"v x y z [w]\"");
+      if (w.size() != 4 && w.size() != 5) mesh_fail(errc::scene_mesh_malformed, what, n, "a vertex is \"v x y z [w]\"");
       point3 p{mesh_number(w[1], what, n, limits), mesh_number(w[2], what, n, limits), mesh_number(w[3], what, n, limits)};
       if (w.size() == 5) {
         const rational h = mesh_number(w[4], what, n, limits);
-        if (sgn(h) == 0) mesh_fail("mesh_malformed", what, n, "a vertex with w = 0 is not a finite point");
+        if (sgn(h) == 0) mesh_fail(errc::scene_mesh_malformed, what, n, "a vertex with w = 0 is not a finite point");
         for (auto& x : p) x /= h;
       }
-      if (m.vertices.size() >= limits.max_vertices) mesh_fail("too_large", what, n, "more than " + std::to_string(limits.max_vertices) + " vertices (raise it with --max-vertices)");
+      if (m.vertices.size() >= limits.max_vertices) mesh_fail(errc::scene_too_large, what, n, "more than " + std::to_string(limits.max_vertices) + " vertices (raise it with --max-vertices)");
       m.vertices.push_back(p);
     } else if (w[0] == "f") {
-      if (w.size() < 4) mesh_fail("empty_polygon", what, n, "a face needs at least 3 vertices");
-      if (w.size() - 1 > limits.max_face_vertices) mesh_fail("too_large", what, n, "the face has more than " + std::to_string(limits.max_face_vertices) + " vertices (raise it with --max-face-vertices)");
+      if (w.size() < 4) mesh_fail(errc::scene_empty_polygon, what, n, "a face needs at least 3 vertices");
+      if (w.size() - 1 > limits.max_face_vertices) mesh_fail(errc::scene_too_large, what, n, "the face has more than " + std::to_string(limits.max_face_vertices) + " vertices (raise it with --max-face-vertices)");
       std::vector<std::size_t> face;
       for (std::size_t j = 1; j < w.size(); ++j) {
         const std::string idx_text = w[j].substr(0, w[j].find('/'));
@@ -149,13 +149,13 @@ caster read_obj(std::istream& in, const std::string& what, const scene_limits& l
         const std::size_t v = mesh_count(negative ? idx_text.substr(1) : idx_text, what, n, "vertex index");
         const std::size_t count = m.vertices.size();
         if (v == 0 || v > count)
-          mesh_fail("bad_index", what, n, "vertex index " + idx_text + " is out of range (" + std::to_string(count) + " vertices so far)");
+          mesh_fail(errc::scene_bad_index, what, n, "vertex index " + idx_text + " is out of range (" + std::to_string(count) + " vertices so far)");
         const std::size_t index = negative ? count - v : v - 1;
         if (std::find(face.begin(), face.end(), index) != face.end())
-          mesh_fail("repeated_index", what, n, "vertex index " + idx_text + " appears twice in the face");
+          mesh_fail(errc::scene_repeated_index, what, n, "vertex index " + idx_text + " appears twice in the face");
         face.push_back(index);
       }
-      if (m.faces.size() >= limits.max_faces) mesh_fail("too_large", what, n, "more than " + std::to_string(limits.max_faces) + " faces (raise it with --max-faces)");
+      if (m.faces.size() >= limits.max_faces) mesh_fail(errc::scene_too_large, what, n, "more than " + std::to_string(limits.max_faces) + " faces (raise it with --max-faces)");
       m.faces.push_back(std::move(face));
     }
   }
@@ -166,10 +166,10 @@ caster read_mesh_file(const std::string& path, const std::string& what, const sc
   std::string ext = path.size() >= 4 ? path.substr(path.size() - 4) : std::string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   if (ext != ".off" && ext != ".obj")
-    throw error("scene.mesh_unreadable", what + ": '" + path + "' is neither an .off nor an .obj file");
+    throw error(errc::scene_mesh_unreadable, what + ": '" + path + "' is neither an .off nor an .obj file");
   std::ifstream in(path);
   if (!in || std::filesystem::is_directory(path))
-    throw error("scene.mesh_unreadable", what + ": cannot open the mesh file '" + path + "'");
+    throw error(errc::scene_mesh_unreadable, what + ": cannot open the mesh file '" + path + "'");
   check_file_size(path, limits);
   const std::string name = what + " ('" + path + "')";
   return ext == ".off" ? read_off(in, name, limits) : read_obj(in, name, limits);

@@ -45,7 +45,7 @@ class exact_sax {
   bool key(json::string_t& k) {
     // nlohmann keeps the last of duplicate keys silently; a scene with two "light"s is ambiguous.
     if (stack_.back()->contains(k))
-      throw error("scene.duplicate_key", current_path(false) + ": the key \"" + k + "\" appears twice");
+      throw error(errc::scene_duplicate_key, current_path(false) + ": the key \"" + k + "\" appears twice");
     key_ = k;
     return true;
   }
@@ -67,16 +67,16 @@ class exact_sax {
     // nlohmann refuses number literals beyond the double range (id 406) before we see their
     // text; a string keeps them exact.
     if (ex.id == 406)
-      throw error("scene.json", "the JSON number " + token + " is beyond the range nlohmann/json accepts; "
+      throw error(errc::scene_json, "the JSON number " + token + " is beyond the range nlohmann/json accepts; "
                   "write it as a string (\"" + token + "\") to read it exactly");
-    throw error("scene.json", std::string("the scene is not valid JSON: ") + ex.what());
+    throw error(errc::scene_json, std::string("the scene is not valid JSON: ") + ex.what());
   }
 
  private:
   // Depth is capped so a hostile document cannot exhaust memory or the stack later on.
   void enter() {
     if (stack_.size() + 1 > limits_.max_json_depth)
-      throw error("scene.too_deep", current_path(true) + ": JSON nested deeper than " +
+      throw error(errc::scene_too_deep, current_path(true) + ": JSON nested deeper than " +
                                         std::to_string(limits_.max_json_depth) +
                                         " levels (raise it with --max-json-depth)");
   }
@@ -103,7 +103,7 @@ class exact_sax {
 
   json* place(json v) {
     if (++values_ > limits_.max_json_values)
-      throw error("scene.too_large", "the scene has more than " + std::to_string(limits_.max_json_values) +
+      throw error(errc::scene_too_large, "the scene has more than " + std::to_string(limits_.max_json_values) +
                                          " JSON values (raise it with --max-json-values)");
     if (stack_.empty()) {
       root_ = std::move(v);
@@ -135,8 +135,8 @@ struct reader {
   std::size_t total_vertices = 0;
   std::size_t total_faces = 0;
 
-  [[noreturn]] static void fail(const std::string& id, const std::string& path, const std::string& what) {
-    throw error("scene." + id, (path.empty() ? std::string("/") : path) + ": " + what);
+  [[noreturn]] static void fail(errc code, const std::string& path, const std::string& what) {
+    throw error(code, (path.empty() ? std::string("/") : path) + ": " + what);
   }
 
   static std::string kind(const json& j) {
@@ -152,7 +152,7 @@ struct reader {
     for (auto it = j.begin(); it != j.end(); ++it) {
       bool ok = false;
       for (const char* a : allowed) ok = ok || it.key() == a;
-      if (!ok) fail("unknown_key", path + "/" + it.key(), "unknown key (allowed here: " + [&] {
+      if (!ok) fail(errc::scene_unknown_key, path + "/" + it.key(), "unknown key (allowed here: " + [&] {
                       std::string s;
                       for (const char* a : allowed) s += (s.empty() ? "" : ", ") + std::string(a);
                       return s;
@@ -161,39 +161,39 @@ struct reader {
   }
 
   static const json& member(const json& j, const std::string& path, const char* key) {
-    if (!j.is_object()) fail("type", path, "expected an object, found " + kind(j));
+    if (!j.is_object()) fail(errc::scene_type, path, "expected an object, found " + kind(j));
     auto it = j.find(key);
-    if (it == j.end()) fail("missing", path, std::string("missing key \"") + key + "\"");
+    if (it == j.end()) fail(errc::scene_missing, path, std::string("missing key \"") + key + "\"");
     return *it;
   }
 
   rational number(const json& j, const std::string& path) const {
-    if (!j.is_string()) fail("type", path, "expected a number, found " + kind(j));
+    if (!j.is_string()) fail(errc::scene_type, path, "expected a number, found " + kind(j));
     std::string text = j.get<std::string>();
     if (!text.empty() && text[0] == number_mark) text.erase(0, 1);
     try {
       return parse_number(text, limits.numbers);
     } catch (const error& e) {
-      fail("bad_number", path, std::string("\"") + text + "\" is not a valid number: " + e.what());
+      fail(errc::scene_bad_number, path, std::string("\"") + text + "\" is not a valid number: " + e.what());
     }
   }
 
   const json& array(const json& j, const std::string& path) const {
-    if (!j.is_array()) fail("type", path, "expected an array, found " + kind(j));
+    if (!j.is_array()) fail(errc::scene_type, path, "expected an array, found " + kind(j));
     return j;
   }
 
   point3 point(const json& j, const std::string& path) const {
     array(j, path);
-    if (j.size() != 3) fail("type", path, "a point needs 3 coordinates [x, y, z], found " + std::to_string(j.size()));
+    if (j.size() != 3) fail(errc::scene_type, path, "a point needs 3 coordinates [x, y, z], found " + std::to_string(j.size()));
     return {number(j[0], path + "/0"), number(j[1], path + "/1"), number(j[2], path + "/2")};
   }
 
   polygon3 polygon(const json& j, const std::string& path) const {
     array(j, path);
-    if (j.size() < 3) fail("empty_polygon", path, "a polygon needs at least 3 vertices, found " + std::to_string(j.size()));
+    if (j.size() < 3) fail(errc::scene_empty_polygon, path, "a polygon needs at least 3 vertices, found " + std::to_string(j.size()));
     if (j.size() > limits.max_face_vertices)
-      fail("too_large", path, "a polygon has at most " + std::to_string(limits.max_face_vertices) + " vertices");
+      fail(errc::scene_too_large, path, "a polygon has at most " + std::to_string(limits.max_face_vertices) + " vertices");
     polygon3 p;
     for (std::size_t i = 0; i < j.size(); ++i) p.vertices.push_back(point(j[i], path + "/" + std::to_string(i)));
     return p;
@@ -203,17 +203,17 @@ struct reader {
     total_vertices += vertices;
     total_faces += faces;
     if (total_vertices > limits.max_vertices)
-      fail("too_large", path, "the casters have more than " + std::to_string(limits.max_vertices) + " vertices (raise it with --max-vertices)");
+      fail(errc::scene_too_large, path, "the casters have more than " + std::to_string(limits.max_vertices) + " vertices (raise it with --max-vertices)");
     if (total_faces > limits.max_faces)
-      fail("too_large", path, "the casters have more than " + std::to_string(limits.max_faces) + " faces (raise it with --max-faces)");
+      fail(errc::scene_too_large, path, "the casters have more than " + std::to_string(limits.max_faces) + " faces (raise it with --max-faces)");
   }
 
   caster mesh(const json& j, const std::string& path) {
-    if (!j.is_object()) fail("type", path, "expected an object, found " + kind(j));
+    if (!j.is_object()) fail(errc::scene_type, path, "expected an object, found " + kind(j));
     if (j.contains("file")) {
       check_keys(j, path, {"file"});
       const json& f = j["file"];
-      if (!f.is_string() || kind(f) != "a string") fail("type", path + "/file", "expected a file name string, found " + kind(f));
+      if (!f.is_string() || kind(f) != "a string") fail(errc::scene_type, path + "/file", "expected a file name string, found " + kind(f));
       std::string file = f.get<std::string>();
       if (!file.empty() && file[0] != '/' && !base_directory.empty()) file = base_directory + "/" + file;
       caster c = read_mesh_file(file, path + "/file", limits);
@@ -231,21 +231,21 @@ struct reader {
     for (std::size_t f = 0; f < fs.size(); ++f) {
       const std::string fp = path + "/faces/" + std::to_string(f);
       const json& face = array(fs[f], fp);
-      if (face.size() < 3) fail("empty_polygon", fp, "a face needs at least 3 vertex indices, found " + std::to_string(face.size()));
+      if (face.size() < 3) fail(errc::scene_empty_polygon, fp, "a face needs at least 3 vertex indices, found " + std::to_string(face.size()));
       if (face.size() > limits.max_face_vertices)
-        fail("too_large", fp, "a face has at most " + std::to_string(limits.max_face_vertices) + " vertices (raise it with --max-face-vertices)");
+        fail(errc::scene_too_large, fp, "a face has at most " + std::to_string(limits.max_face_vertices) + " vertices (raise it with --max-face-vertices)");
       std::vector<std::size_t> idx;
       for (std::size_t k = 0; k < face.size(); ++k) {
         const std::string ip = fp + "/" + std::to_string(k);
         const rational q = number(face[k], ip);
         if (q.get_den() != 1 || sgn(q) < 0 || q >= rational(static_cast<unsigned long>(c.vertices.size())))
-          fail("bad_index", ip, "vertex index " + to_string(q) + " is not an integer in [0, " +
+          fail(errc::scene_bad_index, ip, "vertex index " + to_string(q) + " is not an integer in [0, " +
                                     std::to_string(c.vertices.size()) + ")");
         const std::size_t index = q.get_num().get_ui();
         // A face naming one vertex twice is a broken mesh, not a degenerate shape (coincident
         // vertices with distinct indices are geometry and are reported as a case instead).
         if (std::find(idx.begin(), idx.end(), index) != idx.end())
-          fail("repeated_index", ip, "vertex index " + std::to_string(index) + " appears twice in the face");
+          fail(errc::scene_repeated_index, ip, "vertex index " + std::to_string(index) + " appears twice in the face");
         idx.push_back(index);
       }
       c.faces.push_back(std::move(idx));
@@ -254,11 +254,11 @@ struct reader {
   }
 
   scene read(const json& root) {
-    if (!root.is_object()) fail("type", "", "the scene must be a JSON object, found " + kind(root));
+    if (!root.is_object()) fail(errc::scene_type, "", "the scene must be a JSON object, found " + kind(root));
     check_keys(root, "", {"receiver", "light", "casters"});
     scene s;
     const json& rec = member(root, "", "receiver");
-    if (!rec.is_object()) fail("type", "/receiver", "expected an object, found " + kind(rec));
+    if (!rec.is_object()) fail(errc::scene_type, "/receiver", "expected an object, found " + kind(rec));
     check_keys(rec, "/receiver", {"polygon", "holes"});
     s.receiver.outer = polygon(member(rec, "/receiver", "polygon"), "/receiver/polygon");
     if (rec.contains("holes")) {
@@ -267,22 +267,22 @@ struct reader {
         s.receiver.holes.push_back(polygon(hs[h], "/receiver/holes/" + std::to_string(h)));
     }
     const json& l = array(member(root, "", "light"), "/light");
-    if (l.size() != 4) fail("type", "/light", "the light needs 4 numbers [x, y, z, w], found " + std::to_string(l.size()));
+    if (l.size() != 4) fail(errc::scene_type, "/light", "the light needs 4 numbers [x, y, z, w], found " + std::to_string(l.size()));
     try {
       s.light_source = make_light(number(l[0], "/light/0"), number(l[1], "/light/1"), number(l[2], "/light/2"),
                                   number(l[3], "/light/3"));
     } catch (const error& e) {
-      if (e.id() != "geometry.zero_light") throw;
-      fail("zero_light", "/light", "(0, 0, 0, 0) is neither a point nor a direction");
+      if (e.code() != errc::geometry_zero_light) throw;
+      fail(errc::scene_zero_light, "/light", "(0, 0, 0, 0) is neither a point nor a direction");
     }
     const json& cs = array(member(root, "", "casters"), "/casters");
     for (std::size_t i = 0; i < cs.size(); ++i) {
       const std::string cp = "/casters/" + std::to_string(i);
       const json& c = cs[i];
-      if (!c.is_object()) fail("type", cp, "expected an object, found " + kind(c));
+      if (!c.is_object()) fail(errc::scene_type, cp, "expected an object, found " + kind(c));
       check_keys(c, cp, {"polygon", "mesh"});
       if (c.contains("polygon") == c.contains("mesh"))
-        fail("type", cp, "a caster has exactly one of \"polygon\" or \"mesh\"");
+        fail(errc::scene_type, cp, "a caster has exactly one of \"polygon\" or \"mesh\"");
       if (c.contains("polygon")) {
         caster k;
         k.name = cp + "/polygon";
@@ -306,7 +306,7 @@ void check_file_size(const std::string& path, const scene_limits& limits) {
   std::error_code ec;
   const auto size = std::filesystem::file_size(path, ec);
   if (!ec && size > limits.max_file_bytes)
-    throw error("io.too_large", path + " is larger than the limit of " + std::to_string(limits.max_file_bytes) +
+    throw error(errc::io_too_large, path + " is larger than the limit of " + std::to_string(limits.max_file_bytes) +
                                     " bytes (raise it with --max-file-bytes)");
 }
 
@@ -321,7 +321,7 @@ scene parse_scene(const std::string& json_text, const std::string& base_director
 scene read_scene_file(const std::string& path, const scene_limits& limits) {
   std::ifstream in(path, std::ios::binary);
   if (!in || std::filesystem::is_directory(path))
-    throw error("scene.unreadable", "cannot open the scene file '" + path + "'");
+    throw error(errc::scene_unreadable, "cannot open the scene file '" + path + "'");
   check_file_size(path, limits);
   std::ostringstream text;
   text << in.rdbuf();

@@ -47,7 +47,7 @@ std::string_view to_string(depth_format f) {
 depth_format parse_depth_format(std::string_view text) {
   if (text == "f32") return depth_format::f32;
   if (text == "unorm24") return depth_format::unorm24;
-  throw error("depth_precision.format",
+  throw error(errc::depth_precision_format,
               "unknown depth format '" + std::string(text) + "': expected f32 or unorm24");
 }
 
@@ -115,20 +115,20 @@ depth_precision_report depth_precision(const mat4<rational>& M, depth_convention
                                        const rational& to, const std::vector<rational>& at) {
   const auto df = depth_function_of(M);
   if (!df)
-    throw error("depth_precision.not_separable",
+    throw error(errc::depth_precision_not_separable,
                 "the projection's depth depends on x or y, not on the eye depth alone");
   if (df->determinant() == 0)
-    throw error("depth_precision.constant_depth",
+    throw error(errc::depth_precision_constant_depth,
                 "the projection maps every eye depth to the same NDC depth (a d - b c = 0)");
   if (!(from > 0) || !(from < to))
-    throw error("depth_precision.interval", "the eye-distance interval [" + to_string(from) +
+    throw error(errc::depth_precision_interval, "the eye-distance interval [" + to_string(from) +
                                                 ", " + to_string(to) +
                                                 "] must satisfy 0 < from < to");
   // The pole of z_ndc(−s) is at s = d/c; the interval must lie on one side of it.
   if (df->c != 0) {
     const rational pole = df->d / df->c;
     if (from <= pole && pole <= to)
-      throw error("depth_precision.pole", "the interval [" + to_string(from) + ", " +
+      throw error(errc::depth_precision_pole, "the interval [" + to_string(from) + ", " +
                                               to_string(to) + "] contains the distance " +
                                               to_string(pole) + " where w_clip = 0");
   }
@@ -136,13 +136,13 @@ depth_precision_report depth_precision(const mat4<rational>& M, depth_convention
 
   auto depth_at = [&](const rational& s, const char* what) {
     if (!(s > 0) || sign(rational(-df->c * s + df->d)) != side)
-      throw error("depth_precision.outside_volume",
+      throw error(errc::depth_precision_outside_volume,
                   std::string(what) + ": distance " + to_string(s) +
                       " is not in front of the eye on the side of the interval");
     const rational z_ndc = (*df)(rational(-s));
     const rational d = window_depth(z_ndc, c);
     if (d < 0 || d > 1)
-      throw error("depth_precision.outside_volume",
+      throw error(errc::depth_precision_outside_volume,
                   std::string(what) + ": distance " + to_string(s) + " has NDC depth " +
                       to_string(z_ndc) + ", outside the near/far range of " +
                       std::string(to_string(c)) + ": it would be clipped");

@@ -16,24 +16,24 @@ namespace shadowproof {
 std::string read_file(const std::filesystem::path& path, std::size_t max_bytes) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
-    throw error("io.cannot_read", "cannot read " + path.string() + ": it is a directory");
+    throw error(errc::io_cannot_read, "cannot read " + path.string() + ": it is a directory");
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw error("io.cannot_read", "cannot read " + path.string() + ": " + std::strerror(errno));
+  if (!in) throw error(errc::io_cannot_read, "cannot read " + path.string() + ": " + std::strerror(errno));
   std::string content;
   char buffer[1 << 16];
   while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
     content.append(buffer, static_cast<std::size_t>(in.gcount()));
     if (content.size() > max_bytes)
-      throw error("io.too_large", path.string() + " is larger than the limit of " + std::to_string(max_bytes) +
+      throw error(errc::io_too_large, path.string() + " is larger than the limit of " + std::to_string(max_bytes) +
                                       " bytes (raise it with --max-file-bytes)");
   }
-  if (in.bad()) throw error("io.cannot_read", "cannot read " + path.string() + ": read error");
+  if (in.bad()) throw error(errc::io_cannot_read, "cannot read " + path.string() + ": read error");
   return content;
 }
 
 void write_file_atomically(const std::filesystem::path& path, std::string_view content) {
   auto fail = [&](const std::string& why) {
-    throw error("io.cannot_write", "cannot write " + path.string() + ": " + why);
+    throw error(errc::io_cannot_write, "cannot write " + path.string() + ": " + why);
   };
   const std::filesystem::path dir = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
   std::string temp = (dir / ("." + path.filename().string() + ".tmp-XXXXXX")).string();

@@ -24,14 +24,14 @@ std::string quoted(std::string_view text) {
 }
 
 [[noreturn]] void throw_malformed(std::string_view text, const std::string& why) {
-  throw error("number.malformed",
+  throw error(errc::number_malformed,
               "cannot read " + quoted(text) + " as a number: " + why +
                   " (expected an integer 42, a decimal 0.1 or -2.5e-3, a fraction 1/3, a hex "
                   "float 0x1.8p-3, or f32:<number> / f64:<number>)");
 }
 
 [[noreturn]] void throw_too_large(std::string_view text, const number_limits& limits) {
-  throw error("number.too_large",
+  throw error(errc::number_too_large,
               quoted(text) + " needs more than " + std::to_string(limits.max_bits) +
                   " bits in its numerator or denominator (the limit is " +
                   std::to_string(limits.max_bits) + " bits; raise it with --max-bits)");
@@ -181,7 +181,7 @@ rational parse_fraction(std::string_view s, std::size_t slash, std::string_view 
       throw_too_large(text, limits);
   }
   mpz_class p(std::string(num), 10), q(std::string(den), 10);
-  if (q == 0) throw error("number.zero_denominator", "the fraction " + quoted(text) + " divides by zero");
+  if (q == 0) throw error(errc::number_zero_denominator, "the fraction " + quoted(text) + " divides by zero");
   if (mpz_sizeinbase(p.get_mpz_t(), 2) > limits.max_bits ||
       mpz_sizeinbase(q.get_mpz_t(), 2) > limits.max_bits)
     throw_too_large(text, limits);
@@ -251,19 +251,19 @@ rational parse_number(std::string_view text, const number_limits& limits) {
     if (text.substr(0, 4) != prefix) continue;
     std::string_view body = text.substr(4);
     if (names_non_finite(body))
-      throw error("number.not_finite", quoted(text) + " is not a finite number; shadowproof "
+      throw error(errc::number_not_finite, quoted(text) + " is not a finite number; shadowproof "
                                                       "takes finite inputs only");
     rational exact = parse_exact(body, text, limits);
     double rounded = prefix == "f32:" ? static_cast<double>(to_nearest_float(exact))
                                       : to_nearest_double(exact);
     if (std::isinf(rounded))
-      throw error("number.not_finite", quoted(text) + " overflows the " +
+      throw error(errc::number_not_finite, quoted(text) + " overflows the " +
                                            std::string(prefix == "f32:" ? "float" : "double") +
                                            " format to infinity");
     return exact_value(rounded);
   }
   if (names_non_finite(text))
-    throw error("number.not_finite",
+    throw error(errc::number_not_finite,
                 quoted(text) + " is not a finite number; shadowproof takes finite inputs only");
   return parse_exact(text, text, limits);
 }
@@ -283,7 +283,7 @@ std::vector<rational> parse_number_list(std::string_view text, std::size_t count
     if (values.size() > count) break;  // already too many: stop parsing
   }
   if (values.size() != count)
-    throw error("number.list_length",
+    throw error(errc::number_list_length,
                 std::string(what) + " expects " + std::to_string(count) +
                     " comma-separated numbers, got " + (values.size() > count ? "more" : std::to_string(values.size())) +
                     " in " + quoted(text));
@@ -313,7 +313,7 @@ float to_nearest_float(const rational& q) {
 
 rational exact_value(double x) {
   if (!std::isfinite(x))
-    throw error("number.not_finite", std::string("the value ") + (std::isnan(x) ? "nan" : "inf") +
+    throw error(errc::number_not_finite, std::string("the value ") + (std::isnan(x) ? "nan" : "inf") +
                                          " is not finite and has no exact rational value");
   return rational(x);  // mpq_set_d is exact for finite doubles
 }

@@ -361,7 +361,7 @@ explanation explain_normal_matrix(const mat4<rational>& M) {
   e.steps.push_back(text_step("The determinant, expanded along the first row (m0j times cofactor C0j):",
                               {"det M = " + expansion + " = " + str(det)}));
   if (det == 0)
-    throw error("matrix.singular",
+    throw error(errc::matrix_singular,
                 "the matrix is singular (determinant 0): it flattens space, so neither its inverse "
                 "nor its normal matrix (M⁻¹)ᵀ exists");
   e.steps.push_back(matrix_step(

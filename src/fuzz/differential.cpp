@@ -223,7 +223,7 @@ std::optional<std::uint64_t> metamorphic_violation(const implementation& impl, c
 
 test_case make_fuzz_case(const generated_case<double>& g, const implementation& impl, std::uint64_t id) {
   if (!is_supported(impl.op))
-    throw error("fuzz.unsupported_operation", "fuzzing supports shadow-matrix, shadow-point and reflection-matrix, not " +
+    throw error(errc::fuzz_unsupported_operation, "fuzzing supports shadow-matrix, shadow-point and reflection-matrix, not " +
                                                   std::string(to_string(impl.op)) + " (" + impl.name + ")");
   test_case c;
   c.id = id;

@@ -36,7 +36,7 @@ const std::vector<implementation>& builtin_implementations() {
 const implementation& find_builtin_implementation(std::string_view name) {
   for (const auto& i : builtin_implementations())
     if (i.name == name) return i;
-  throw error("verify.unknown_impl",
+  throw error(errc::verify_unknown_impl,
               "no implementation named '" + std::string(name) + "' (see 'shadowproof check --list')");
 }
 

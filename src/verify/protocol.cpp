@@ -49,7 +49,7 @@ std::optional<double> json_number(const nlohmann::json& v, scalar_type t, bool a
   return x;
 }
 
-nlohmann::json parse_line(std::string_view line, std::size_t line_number, const char* id) {
+nlohmann::json parse_line(std::string_view line, std::size_t line_number, errc id) {
   try {
     return nlohmann::json::parse(line);
   } catch (const nlohmann::json::exception& e) {
@@ -60,8 +60,8 @@ nlohmann::json parse_line(std::string_view line, std::size_t line_number, const 
 }  // namespace
 
 test_case parse_case_line(std::string_view line, std::size_t line_number) {
-  const nlohmann::json j = parse_line(line, line_number, "protocol.case");
-  auto fail = [&](const std::string& what) { throw error("protocol.case", where(line_number) + ": " + what); };
+  const nlohmann::json j = parse_line(line, line_number, errc::protocol_case);
+  auto fail = [&](const std::string& what) { throw error(errc::protocol_case, where(line_number) + ": " + what); };
   if (!j.is_object()) fail("expected a JSON object");
   test_case c;
   if (!j.contains("id") || !j["id"].is_number_unsigned()) fail("\"id\" must be a non-negative integer");
@@ -106,8 +106,8 @@ test_case parse_case_line(std::string_view line, std::size_t line_number) {
 
 output_line parse_output_line(std::string_view line, std::size_t line_number, scalar_type type,
                               std::size_t count) {
-  const nlohmann::json j = parse_line(line, line_number, "protocol.output");
-  auto fail = [&](const std::string& what) { throw error("protocol.output", where(line_number) + ": " + what); };
+  const nlohmann::json j = parse_line(line, line_number, errc::protocol_output);
+  auto fail = [&](const std::string& what) { throw error(errc::protocol_output, where(line_number) + ": " + what); };
   if (!j.is_object()) fail("expected a JSON object");
   output_line o;
   if (!j.contains("id") || !j["id"].is_number_unsigned()) fail("\"id\" must be a non-negative integer");
@@ -129,7 +129,7 @@ output_line parse_output_line(std::string_view line, std::size_t line_number, sc
 }
 
 std::string exact_decimal(double x) {
-  if (!std::isfinite(x)) throw error("verify.not_finite", "exact_decimal needs a finite number");
+  if (!std::isfinite(x)) throw error(errc::verify_not_finite, "exact_decimal needs a finite number");
   if (x == 0) return std::signbit(x) ? "-0" : "0";
   int e = 0;
   const double m = std::frexp(std::fabs(x), &e);  // |x| = m 2^e, m in [0.5, 1)

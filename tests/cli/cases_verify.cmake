@@ -36,10 +36,10 @@ if(TARGET shadowproof_impls)
 endif()
 shadowproof_cli_case(NAME "check rejects an unknown implementation"
   ARGS check --impl no-such-impl EXPECT_CODE 2 STDOUT_EMPTY
-  STDERR_REGEX "\\[shadowproof.check.unknown_impl\\] no implementation named 'no-such-impl' \\(see --list\\)")
+  STDERR_REGEX "\\[shadowproof.verify.unknown_impl\\] no implementation named 'no-such-impl' \\(see --list\\)")
 shadowproof_cli_case(NAME "check rejects an unknown operation"
   ARGS check --impl all --op twist EXPECT_CODE 2 STDOUT_EMPTY
-  STDERR_REGEX "\\[shadowproof.check.unknown_op\\] unknown --op 'twist'")
+  STDERR_REGEX "\\[shadowproof.verify.unknown_op\\] unknown --op 'twist'")
 
 # --- cases ------------------------------------------------------------------------------------
 shadowproof_cli_case(NAME "cases writes the protocol's JSON lines"
@@ -50,7 +50,7 @@ shadowproof_cli_case(NAME "cases names the point input of shadow-point"
   STDOUT_REGEX "\"point\": \\[")
 shadowproof_cli_case(NAME "cases rejects an unknown type"
   ARGS cases --op shadow-matrix --type f16 EXPECT_CODE 2 STDOUT_EMPTY
-  STDERR_REGEX "\\[shadowproof.cases.unknown_type\\] unknown --type 'f16'; expected f32 or f64")
+  STDERR_REGEX "\\[shadowproof.verify.unknown_type\\] unknown --type 'f16'; expected f32 or f64")
 
 # --- grade ------------------------------------------------------------------------------------
 shadowproof_cli_case(NAME "grade: the exact matrix is 0 ulps"

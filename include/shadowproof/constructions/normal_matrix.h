@@ -19,7 +19,7 @@ template <class T>
 mat4<T> inverse(const mat4<T>& M) {
   const T det = determinant(M);
   if (det == T(0))
-    throw error("matrix.singular",
+    throw error(errc::matrix_singular,
                 "the matrix is singular (determinant 0): it flattens space, so neither its inverse "
                 "nor its normal matrix (M⁻¹)ᵀ exists");
   return (T(1) / det) * adjugate(M);

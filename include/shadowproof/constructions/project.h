@@ -49,7 +49,7 @@ inline depth_convention parse_depth_convention(std::string_view text) {
   if (text == "gl") return depth_convention::gl;
   if (text == "d3d") return depth_convention::d3d;
   if (text == "reverse-z" || text == "reverse_z") return depth_convention::reverse_z;
-  throw error("project.convention",
+  throw error(errc::project_convention,
               "unknown depth convention '" + std::string(text) + "': expected gl, d3d or reverse-z");
 }
 
@@ -91,13 +91,13 @@ template <class T>
 void require_distinct(const T& a, const T& b, const char* name_a, const char* name_b,
                       const char* extent) {
   if (a == b)
-    throw error("project.degenerate_volume", std::string(name_a) + " = " + name_b + " = " +
+    throw error(errc::project_degenerate_volume, std::string(name_a) + " = " + name_b + " = " +
                                                  number_text(a) + ": the view volume has zero " +
                                                  extent + ", no projection maps it onto a cube");
 }
 
 template <class T>
-void require_positive(const T& x, const char* id, const char* name, const char* why) {
+void require_positive(const T& x, errc id, const char* name, const char* why) {
   if (!(x > T(0)))
     throw error(id, std::string(name) + " = " + number_text(x) + " must be > 0: " + why);
 }
@@ -117,13 +117,13 @@ template <class T>
 void set_perspective_depth_rows(mat4<T>& M, const T& n, const T& f, depth_convention c,
                                 bool infinite_far) {
   const depth_range<T> z = ndc_depth_range<T>(c);
-  require_positive(n, "project.near_not_positive", "near",
+  require_positive(n, errc::project_near_not_positive, "near",
                    "the near plane of a perspective projection lies in front of the eye");
   if (infinite_far) {
     M(2, 2) = -z.far_ndc;
     M(2, 3) = n * (z.near_ndc - z.far_ndc);
   } else {
-    require_positive(f, "project.far_not_positive", "far",
+    require_positive(f, errc::project_far_not_positive, "far",
                      "the far plane of a perspective projection lies in front of the eye");
     require_distinct(n, f, "near", "far", "depth");
     M(2, 2) = (n * z.near_ndc - f * z.far_ndc) / (f - n);
@@ -278,9 +278,9 @@ mat4<T> frustum(const T& l, const T& r, const T& b, const T& t, const T& n, cons
 template <class T>
 mat4<T> perspective(const T& cot_half_fovy, const T& aspect, const T& n, const T& f,
                     depth_convention c, bool infinite_far = false) {
-  detail::require_positive(cot_half_fovy, "project.focal_not_positive", "cot(fovy/2)",
+  detail::require_positive(cot_half_fovy, errc::project_focal_not_positive, "cot(fovy/2)",
                            "the field of view must lie in (0°, 180°)");
-  detail::require_positive(aspect, "project.aspect_not_positive", "aspect",
+  detail::require_positive(aspect, errc::project_aspect_not_positive, "aspect",
                            "width/height of the image");
   mat4<T> M;
   detail::set_perspective_depth_rows(M, n, f, c, infinite_far);
@@ -297,11 +297,11 @@ namespace detail {
 template <class T>
 void check_games101_planes(const T& n, const T& f) {
   if (!(n < T(0)))
-    throw error("project.games101_sign", "near = " + number_text(n) +
+    throw error(errc::project_games101_sign, "near = " + number_text(n) +
                                              " must be < 0: GAMES101 looks down −z and takes the "
                                              "z coordinates of the planes, not their distances");
   if (!(f < T(0)))
-    throw error("project.games101_sign", "far = " + number_text(f) +
+    throw error(errc::project_games101_sign, "far = " + number_text(f) +
                                              " must be < 0: GAMES101 looks down −z and takes the "
                                              "z coordinates of the planes, not their distances");
   require_distinct(n, f, "near", "far", "depth");
@@ -341,9 +341,9 @@ mat4<T> games101_persp_to_ortho_as_printed(const T& n, const T& f) {
 template <class T>
 mat4<T> games101_projection(const T& n, const T& f, const T& cot_half_fovy, const T& aspect) {
   detail::check_games101_planes(n, f);
-  detail::require_positive(cot_half_fovy, "project.focal_not_positive", "cot(fovy/2)",
+  detail::require_positive(cot_half_fovy, errc::project_focal_not_positive, "cot(fovy/2)",
                            "the field of view must lie in (0°, 180°)");
-  detail::require_positive(aspect, "project.aspect_not_positive", "aspect",
+  detail::require_positive(aspect, errc::project_aspect_not_positive, "aspect",
                            "width/height of the image");
   const T top = -n / cot_half_fovy, bottom = -top;
   const T right = top * aspect, left = -right;

@@ -22,8 +22,7 @@ struct light {
 template <class T>
 light<T> make_light(const T& x, const T& y, const T& z, const T& w) {
   if (x == T(0) && y == T(0) && z == T(0) && w == T(0))
-    throw error("geometry.zero_light",
-                "the light (x,y,z,w) must not be (0,0,0,0): it is neither a point nor a direction");
+    throw zero_light_error();
   return light<T>{make_vec4<T>(x, y, z, w)};
 }
 

@@ -28,8 +28,7 @@ struct plane {
 template <class T>
 plane<T> make_plane(const T& a, const T& b, const T& c, const T& d) {
   if (a == T(0) && b == T(0) && c == T(0))
-    throw error("geometry.zero_normal",
-                "the plane (a,b,c,d) needs a non-zero normal (a,b,c); a = b = c = 0 is not a plane");
+    throw zero_normal_error();
   return plane<T>{make_vec4<T>(a, b, c, d)};
 }
 
