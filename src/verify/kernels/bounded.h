@@ -23,7 +23,7 @@
 // Range. bounded serves f32 inputs: products of up to four of them and their approximations
 // stay within 2^±900, far from under- and overflow. bounded_pair serves f64 inputs in
 // polynomials of degree at most d whose magnitudes are 0 or within [2^(52 − 969/d),
-// 2^(1000/d − 1)] (kernels check this first, see f64_input_in_range): every exact product of
+// 2^(1000/d − 1)] (kernels check this first: f64_input_in_range): every exact product of
 // d inputs, and every component of an exact expansion built from them (a multiple of
 // 2^(d (e_min − 52))), then lies within [2^-969, 2^1000], so every two_product of two such is
 // exact (error_free.h). Products of approximations that come closer to underflow add the
@@ -33,47 +33,75 @@
 #include <cstring>
 
 #include "error_free.h"
+#include "lanes.h"
 
 namespace shadowproof::detail {
+inline namespace SHADOWPROOF_KERNEL_TARGET {
 
 /// Multiplies a bound before a decision: covers the rounding of the bound's own computation.
 constexpr double inflate = 1 + 0x1p-40;
 
 /// An f64 input of a polynomial of degree ≤ `degree` the bounded_pair kernels accept: 0 or
 /// 2^(52 − 969/degree) ≤ |x| ≤ 2^(1000/degree − 1) (see above).
-inline bool f64_input_in_range(double x, int degree) {
-  const double a = std::fabs(x);
-  return x == 0 || (a >= std::ldexp(1.0, 52 - 969 / degree) && a <= std::ldexp(1.0, 1000 / degree - 1));
+template <int degree, class R>
+inline auto f64_input_in_range(R x) {
+  constexpr double smallest = power_of_two(52 - 969 / degree), largest = power_of_two(1000 / degree - 1);
+  const R a = magnitude(x);
+  return (x == R(0.0)) | ((a >= R(smallest)) & (a <= R(largest)));
+}
+/// An f32 input: exactly a float.
+template <class R>
+inline auto f32_input_in_range(R x) {
+  return round_to_float_value(x) == x;
 }
 
 // ===========================================================================================
 // bounded: value ± error in double
 
-struct bounded {
-  double v = 0;  ///< the approximation
-  double e = 0;  ///< |exact − v| ≤ e
+template <class R>
+struct basic_bounded {
+  R v = R(0.0);  ///< the approximation
+  R e = R(0.0);  ///< |exact − v| ≤ e
 
-  bounded() = default;
-  /// An exact double (an input, or a small constant).
-  explicit bounded(double x) : v(x), e(0) {}
-  bounded(double value, double error) : v(value), e(error) {}
+  basic_bounded() = default;
+  /// An exact value (an input, or a small constant).
+  explicit basic_bounded(R x) : v(x), e(R(0.0)) {}
+  basic_bounded(R value, R error) : v(value), e(error) {}
 };
+using bounded = basic_bounded<double>;
 
-inline bounded operator-(const bounded& a) { return {-a.v, a.e}; }
-inline bounded operator+(const bounded& a, const bounded& b) {
-  const double s = a.v + b.v;
-  return {s, a.e + b.e + unit_roundoff * std::fabs(s)};
+template <class R>
+inline basic_bounded<R> operator-(const basic_bounded<R>& a) { return {-a.v, a.e}; }
+template <class R>
+inline basic_bounded<R> operator+(const basic_bounded<R>& a, const basic_bounded<R>& b) {
+  const R s = a.v + b.v;
+  return {s, a.e + b.e + R(unit_roundoff) * magnitude(s)};
 }
-inline bounded operator-(const bounded& a, const bounded& b) { return a + (-b); }
-inline bounded operator*(const bounded& a, const bounded& b) {
-  const double p = a.v * b.v;
-  return {p, std::fabs(a.v) * b.e + std::fabs(b.v) * a.e + a.e * b.e + unit_roundoff * std::fabs(p) +
-                 smallest_subnormal};
+template <class R>
+inline basic_bounded<R> operator-(const basic_bounded<R>& a, const basic_bounded<R>& b) { return a + (-b); }
+template <class R>
+inline basic_bounded<R> operator*(const basic_bounded<R>& a, const basic_bounded<R>& b) {
+  const R p = a.v * b.v;
+  return {p, magnitude(a.v) * b.e + magnitude(b.v) * a.e + a.e * b.e + R(unit_roundoff) * magnitude(p) +
+                 R(smallest_subnormal)};
 }
 /// a · b for two f32 inputs: exact in double (48 significant bits at most).
-inline bounded exact_product(const bounded& a, const bounded& b) { return bounded(a.v * b.v); }
-/// a · 2^k, exact.
-inline bounded scaled(const bounded& a, int k) { return {std::ldexp(a.v, k), std::ldexp(a.e, k)}; }
+template <class R>
+inline basic_bounded<R> exact_product(const basic_bounded<R>& a, const basic_bounded<R>& b) {
+  return basic_bounded<R>(a.v * b.v);
+}
+/// a · 2^k, exact (k small: no over- or underflow).
+template <class R>
+inline basic_bounded<R> scaled(const basic_bounded<R>& a, int k) {
+  const R factor(power_of_two(k));
+  return {a.v * factor, a.e * factor};
+}
+
+/// a · c for c = 0 or ±2^k (small k): exact.
+template <class R>
+inline basic_bounded<R> scaled_by(const basic_bounded<R>& a, double c) {
+  return {a.v * R(c), a.e * R(std::fabs(c))};
+}
 
 /// −1, 0 or +1 when the bound decides the sign of the exact value, 2 otherwise.
 inline int sign(const bounded& a) {
@@ -81,65 +109,100 @@ inline int sign(const bounded& a) {
   if (std::fabs(a.v) > a.e * inflate) return a.v > 0 ? 1 : -1;
   return 2;
 }
+/// The bound excludes 0 (lane by lane).
+template <class R>
+inline auto nonzero(const basic_bounded<R>& a) {
+  return magnitude(a.v) > a.e * R(inflate);
+}
+/// The leading part of the approximation (its sign is the exact sign where nonzero says so).
+template <class R>
+inline R first_of(const basic_bounded<R>& a) { return a.v; }
 
 // ===========================================================================================
 // bounded_pair: double-double ± error
 
-struct bounded_pair {
-  double hi = 0, lo = 0;  ///< the approximation hi + lo, |lo| ≤ u |hi|
-  double e = 0;           ///< |exact − (hi + lo)| ≤ e
+template <class R>
+struct basic_bounded_pair {
+  R hi = R(0.0), lo = R(0.0);  ///< the approximation hi + lo, |lo| ≤ u |hi|
+  R e = R(0.0);                ///< |exact − (hi + lo)| ≤ e
 
-  bounded_pair() = default;
-  /// An exact double (an input, or a small constant).
-  explicit bounded_pair(double x) : hi(x), lo(0), e(0) {}
-  bounded_pair(double h, double l, double error) : hi(h), lo(l), e(error) {}
+  basic_bounded_pair() = default;
+  /// An exact value (an input, or a small constant).
+  explicit basic_bounded_pair(R x) : hi(x), lo(R(0.0)), e(R(0.0)) {}
+  basic_bounded_pair(R h, R l, R error) : hi(h), lo(l), e(error) {}
 };
+using bounded_pair = basic_bounded_pair<double>;
 
-inline bounded_pair operator-(const bounded_pair& a) { return {-a.hi, -a.lo, a.e}; }
+template <class R>
+inline basic_bounded_pair<R> operator-(const basic_bounded_pair<R>& a) { return {-a.hi, -a.lo, a.e}; }
 // (a.hi + b.hi) exactly as s + t, then t + a.lo + b.lo rounded twice, renormalised exactly.
-inline bounded_pair operator+(const bounded_pair& a, const bounded_pair& b) {
-  double s, t;
+template <class R>
+inline basic_bounded_pair<R> operator+(const basic_bounded_pair<R>& a, const basic_bounded_pair<R>& b) {
+  R s, t;
   two_sum(a.hi, b.hi, s, t);
-  const double t1 = t + a.lo;
-  const double t2 = t1 + b.lo;
-  bounded_pair r;
+  const R t1 = t + a.lo;
+  const R t2 = t1 + b.lo;
+  basic_bounded_pair<R> r;
   two_sum(s, t2, r.hi, r.lo);
-  r.e = a.e + b.e + unit_roundoff * (std::fabs(t1) + std::fabs(t2));
+  r.e = a.e + b.e + R(unit_roundoff) * (magnitude(t1) + magnitude(t2));
   return r;
 }
-inline bounded_pair operator-(const bounded_pair& a, const bounded_pair& b) { return a + (-b); }
+template <class R>
+inline basic_bounded_pair<R> operator-(const basic_bounded_pair<R>& a, const basic_bounded_pair<R>& b) {
+  return a + (-b);
+}
 // a.hi b.hi exactly as p + q; the cross terms a.hi b.lo + a.lo b.hi rounded; a.lo b.lo (below
-// u² |a b|) left to the bound; then the propagated errors |a| b.e + |b| a.e + a.e b.e.
-inline bounded_pair operator*(const bounded_pair& a, const bounded_pair& b) {
-  double p, q;
+// u² |a b|) left to the bound; then the propagated errors |a| b.e + |b| a.e + a.e b.e, and the
+// smallest subnormal for each rounding that might underflow.
+template <class R>
+inline basic_bounded_pair<R> operator*(const basic_bounded_pair<R>& a, const basic_bounded_pair<R>& b) {
+  R p, q;
   two_product(a.hi, b.hi, p, q);
-  const double c1 = a.hi * b.lo, c2 = a.lo * b.hi;
-  const double c = c1 + c2;
-  const double t = q + c;
-  bounded_pair r;
+  const R c1 = a.hi * b.lo, c2 = a.lo * b.hi;
+  const R c = c1 + c2;
+  const R t = q + c;
+  basic_bounded_pair<R> r;
   two_sum(p, t, r.hi, r.lo);
-  const double abs_a = std::fabs(a.hi) + std::fabs(a.lo), abs_b = std::fabs(b.hi) + std::fabs(b.lo);
-  r.e = unit_roundoff * (std::fabs(c1) + std::fabs(c2) + std::fabs(c) + std::fabs(t)) +
-        std::fabs(a.lo) * std::fabs(b.lo) + abs_a * b.e + abs_b * a.e + a.e * b.e + 8 * smallest_subnormal;
+  const R abs_a = magnitude(a.hi) + magnitude(a.lo), abs_b = magnitude(b.hi) + magnitude(b.lo);
+  r.e = R(unit_roundoff) * (magnitude(c1) + magnitude(c2) + magnitude(c) + magnitude(t)) +
+        magnitude(a.lo) * magnitude(b.lo) + abs_a * b.e + abs_b * a.e + a.e * b.e + R(8 * smallest_subnormal);
   return r;
 }
 /// a · b for two f64 inputs: exact as a pair (two_product).
-inline bounded_pair exact_product(const bounded_pair& a, const bounded_pair& b) {
-  bounded_pair r;
+template <class R>
+inline basic_bounded_pair<R> exact_product(const basic_bounded_pair<R>& a, const basic_bounded_pair<R>& b) {
+  basic_bounded_pair<R> r;
   two_product(a.hi, b.hi, r.hi, r.lo);
   return r;
 }
-/// a · 2^k, exact.
-inline bounded_pair scaled(const bounded_pair& a, int k) {
-  return {std::ldexp(a.hi, k), std::ldexp(a.lo, k), std::ldexp(a.e, k)};
+/// a · 2^k, exact (k small: no over- or underflow).
+template <class R>
+inline basic_bounded_pair<R> scaled(const basic_bounded_pair<R>& a, int k) {
+  const R factor(power_of_two(k));
+  return {a.hi * factor, a.lo * factor, a.e * factor};
+}
+
+/// a · c for c = 0 or ±2^k (small k): exact.
+template <class R>
+inline basic_bounded_pair<R> scaled_by(const basic_bounded_pair<R>& a, double c) {
+  return {a.hi * R(c), a.lo * R(c), a.e * R(std::fabs(c))};
 }
 
 /// −1, 0 or +1 when the bound decides the sign of the exact value, 2 otherwise.
 inline int sign(const bounded_pair& a) {
-  if (a.e == 0 && a.lo == 0) return a.hi > 0 ? 1 : (a.hi < 0 ? -1 : 0);
-  // |lo| ≤ u |hi|: hi carries the sign when |hi| (1 − u) > e.
+  if (a.e == 0) return a.hi > 0 ? 1 : (a.hi < 0 ? -1 : 0);  // lo = 0 when hi = 0
+  // |lo| ≤ u |hi|: hi carries the sign when |hi| (1 − 2u) > e.
   if (std::fabs(a.hi) * (1 - 0x1p-52) > a.e * inflate) return a.hi > 0 ? 1 : -1;
   return 2;
 }
+/// The bound excludes 0 (lane by lane).
+template <class R>
+inline auto nonzero(const basic_bounded_pair<R>& a) {
+  return magnitude(a.hi) * R(1 - 0x1p-52) > a.e * R(inflate);
+}
+/// The leading part of the approximation (its sign is the exact sign where nonzero says so).
+template <class R>
+inline R first_of(const basic_bounded_pair<R>& a) { return a.hi; }
 
+}  // namespace SHADOWPROOF_KERNEL_TARGET
 }  // namespace shadowproof::detail

@@ -18,25 +18,31 @@
 // bound their inputs accordingly (kernels/bounded.h).
 #include <cmath>
 
+#include "lanes.h"
+
 namespace shadowproof::detail {
+inline namespace SHADOWPROOF_KERNEL_TARGET {
 
 /// Unit roundoff of double: |fl(x) − x| ≤ unit_roundoff · |fl(x)| for x in the normal range.
 constexpr double unit_roundoff = 0x1p-53;
 /// The smallest positive subnormal double (the absolute rounding error near underflow).
 constexpr double smallest_subnormal = 0x1p-1074;
 
-/// s = fl(a + b), e = (a + b) − s exactly (Knuth's TwoSum, no condition on |a|, |b|).
-inline void two_sum(double a, double b, double& s, double& e) {
+/// s = fl(a + b), e = (a + b) − s exactly (Knuth's TwoSum, no condition on |a|, |b|). R is
+/// double or a vector of doubles (lanes.h).
+template <class R>
+inline void two_sum(R a, R b, R& s, R& e) {
   s = a + b;
-  const double b_virtual = s - a;
-  const double a_virtual = s - b_virtual;
+  const R b_virtual = s - a;
+  const R a_virtual = s - b_virtual;
   e = (a - a_virtual) + (b - b_virtual);
 }
 
 /// hi + lo = x exactly with hi = x rounded to 26 significant bits and |lo| ≤ 2^-27 |x| on 26
 /// bits (Veltkamp's split with the factor 2^27 + 1). Precondition |x| < 2^996.
-inline void split(double x, double& hi, double& lo) {
-  const double c = 134217729.0 * x;  // (2^27 + 1) x
+template <class R>
+inline void split(R x, R& hi, R& lo) {
+  const R c = R(134217729.0) * x;  // (2^27 + 1) x
   hi = c - (c - x);
   lo = x - hi;
 }
@@ -44,9 +50,10 @@ inline void split(double x, double& hi, double& lo) {
 /// p = fl(a · b), e = a · b − p exactly, from Veltkamp's splits (Dekker's product): every
 /// partial product of two 26-bit halves is exact, and so is each subtraction.
 /// Precondition: |a|, |b| < 2^996 and a · b = 0 or |a · b| ≥ 2^-969.
-inline void two_product_dekker(double a, double b, double& p, double& e) {
+template <class R>
+inline void two_product_dekker(R a, R b, R& p, R& e) {
   p = a * b;
-  double a_hi, a_lo, b_hi, b_lo;
+  R a_hi, a_lo, b_hi, b_lo;
   split(a, a_hi, a_lo);
   split(b, b_hi, b_lo);
   e = ((a_hi * b_hi - p) + a_hi * b_lo + a_lo * b_hi) + a_lo * b_lo;
@@ -71,6 +78,8 @@ inline void two_product(double a, double b, double& p, double& e) {
   two_product_dekker(a, b, p, e);
 #endif
 }
+
+}  // namespace SHADOWPROOF_KERNEL_TARGET
 
 /// The instances compiled into the library with the library's own flags, for the tests of the
 /// defining properties above (an inline copy in a test would be compiled with the test's flags).

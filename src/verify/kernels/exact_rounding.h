@@ -14,6 +14,7 @@
 #include "rounding.h"
 
 namespace shadowproof::detail {
+inline namespace SHADOWPROOF_KERNEL_TARGET {
 
 /// x as a double-double hi + lo within a bound about 2^-104 |x|: the components summed in
 /// pair arithmetic from the smallest up. (The largest components alone can be far less
@@ -74,7 +75,7 @@ bool round_exact_quotient(const expansion& num, const expansion& den, double& ou
     return true;
   }
   const pair_denominator d(approximate(den));
-  if (!d.usable) return false;
+  if (!d.usable()) return false;
   double q1, q2, E;
   pair_quotient(approximate(num), d, q1, q2, E);
   double y, r;
@@ -126,4 +127,5 @@ bool round_exact_value(const expansion& x, double& out) {
   return round_exact_quotient<F>(x, expansion(1.0), out);
 }
 
+}  // namespace SHADOWPROOF_KERNEL_TARGET
 }  // namespace shadowproof::detail

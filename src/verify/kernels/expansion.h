@@ -8,8 +8,10 @@
 #include <cmath>
 
 #include "error_free.h"
+#include "lanes.h"
 
 namespace shadowproof::detail {
+inline namespace SHADOWPROOF_KERNEL_TARGET {
 
 /// Grows the nonoverlapping expansion e[0..m) by x (Shewchuk's Grow-Expansion with zero
 /// elimination); e must have room for m + 1 components. Returns the new length.
@@ -90,6 +92,13 @@ class expansion {
   }
   /// a · b for two inputs (the same as a * b; the filter numbers have a cheaper exact form).
   friend expansion exact_product(const expansion& a, const expansion& b) { return a * b; }
+  /// a · c for c = 0 or ±2^k (small k): exact.
+  friend expansion scaled_by(const expansion& a, double c) {
+    if (c == 0) return expansion();
+    expansion r = a;
+    for (int i = 0; i < r.n_; ++i) r.e_[i] *= c;
+    return r;
+  }
   expansion& operator+=(const expansion& b) { return *this = *this + b; }
   expansion& operator-=(const expansion& b) { return *this = *this - b; }
 
@@ -99,4 +108,5 @@ class expansion {
   bool overflowed_ = false;
 };
 
+}  // namespace SHADOWPROOF_KERNEL_TARGET
 }  // namespace shadowproof::detail

@@ -1,84 +1,27 @@
 #pragma once
-// The driver shared by every kernel whose outputs are fractions of polynomials in the inputs:
-// each canonical output is a polynomial, or a polynomial over one of a few shared
-// denominators (r − l, det A, |n|², …). An operation describes itself as a "form":
-//
-//   struct my_form {
-//     static constexpr int inputs = …, entries = …, denominators = …;
-//     // The largest degree of a product of inputs in any numerator or denominator (the f64
-//     // kernels' input range depends on it, bounded.h).
-//     static constexpr int degree = …;
-//     // The inputs the formula reads, from the case's (an exact transformation: the canonical
-//     // light of a light given along its rays, a plane scaled by a power of two).
-//     static void prepare(const double* in, const conventions&, double* x);
-//     // True when the inputs alone leave every output undefined (near plane ≤ 0).
-//     static bool undefined_case(const double* x, const conventions&);
-//     // Which denominator each entry has, and what a zero denominator means.
-//     static fraction_layout layout(const conventions&);
-//     // Numerators and denominators over any number type N: bounded (f32 filter),
-//     // bounded_pair (f64 filter), expansion (exact), or a vector of them (batch.h).
-//     template <class N> static void evaluate(const N* x, const conventions&, N* num, N* den);
-//   };
-//
-// and its kernels are fraction_kernel<my_form, float> and <my_form, double>: the filter number
-// first, exact expansions when a sign or a rounding is undecided, false only when the inputs
-// are outside the kernels' range or an expansion overflows (the generic oracle then decides).
+// The kernels for one case of a fraction form (fraction_form.h): the filter number first, exact
+// expansions when a sign or a rounding is undecided, false only when the inputs are outside the
+// kernels' range or an expansion overflows (the generic oracle then decides).
 #include <cstdint>
+#include <type_traits>
 
 #include "../oracle_fast.h"
-#include "bounded.h"
 #include "exact_rounding.h"
-#include "expansion.h"
-#include "rounding.h"
-#include "shadowproof/core/number.h"
-#include "shadowproof/verify/conventions.h"
+#include "fraction_form.h"
 
 namespace shadowproof::detail {
+inline namespace SHADOWPROOF_KERNEL_TARGET {
 
-/// What an exactly zero denominator means.
-enum class zero_denominator : std::uint8_t {
-  undefines_entries,  ///< the entries over it do not exist (a flat view volume's row)
-  undefines_case,     ///< no output exists (a singular matrix has no inverse)
-  impossible,         ///< the inputs are invalid (a zero normal): leave the case to the generic oracle
-};
-
-/// The shape of a fraction form's outputs.
-struct fraction_layout {
-  signed char denominator[16] = {-1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1};  ///< −1: none
-  bool zero_when_undefined[16] = {};  ///< the entry is 0 (defined) where its denominator is 0
-  zero_denominator on_zero[4] = {};
-};
-
-// ----------------------------------------------------------------------------------------------
-// Small exact helpers for formulas written over N.
-
-/// c · x for a constant c ∈ {−2, −1, 0, 1, 2} (exact in every number type).
-template <class N>
-N times(int c, const N& x) {
-  switch (c) {
-    case 0: return N(0.0);
-    case 1: return x;
-    case -1: return -x;
-    case 2: return scaled(x, 1);
-    default: return -scaled(x, 1);  // −2
-  }
-}
-
-/// The filter number of an output type: bounded for float, bounded_pair for double.
+/// The filter number of an output type for one case.
 template <class F>
-using filter_number = std::conditional_t<std::is_same_v<F, float>, bounded, bounded_pair>;
+using filter_number = filter_number_of<F, double>;
 
-/// Inputs the kernels of type F accept in polynomials of degree ≤ `degree`: floats for f32
-/// (every product of two is exact in a double), doubles in bounded.h's range for f64.
-template <class F>
-bool kernel_inputs(const double* x, int n, int degree) {
-  bool ok = true;
-  for (int i = 0; i < n; ++i) {
-    if constexpr (std::is_same_v<F, float>) ok = ok && representable_in_float(x[i]);
-    else ok = ok && f64_input_in_range(x[i], degree);
-  }
-  return ok;
-}
+/// Whether a form has a rescale(double* x) for the kernel for one case (an exact scaling of
+/// inputs the outputs do not depend on).
+template <class Form, class = void>
+struct rescales : std::false_type {};
+template <class Form>
+struct rescales<Form, std::void_t<decltype(&Form::rescale)>> : std::true_type {};
 
 namespace fraction_detail {
 
@@ -168,8 +111,10 @@ int exact_stage(const double* x, const conventions& conv, const fraction_layout&
 template <class Form, class F>
 bool fraction_kernel(const double* in, const conventions& conv, fast_reference& out) {
   double x[Form::inputs];
-  Form::prepare(in, conv, x);
-  if (!kernel_inputs<F>(x, Form::inputs, Form::degree)) return false;
+  copy_inputs(in, Form::inputs, x);
+  Form::canonical_inputs(x, conv);
+  if constexpr (rescales<Form>::value) Form::rescale(x);
+  if (!kernel_inputs<F, Form::degree, Form::inputs>(x)) return false;
   out = fast_reference{};
   out.count = Form::entries;
   if (Form::undefined_case(x, conv)) {
@@ -184,9 +129,6 @@ bool fraction_kernel(const double* in, const conventions& conv, fast_reference& 
   return fraction_detail::exact_stage<Form, F>(x, conv, layout, out) > 0;
 }
 
-/// The inputs unchanged (most forms).
-inline void copy_inputs(const double* in, int n, double* x) {
-  for (int i = 0; i < n; ++i) x[i] = in[i];
-}
 
+}  // namespace SHADOWPROOF_KERNEL_TARGET
 }  // namespace shadowproof::detail

@@ -1,48 +1,9 @@
-// frustum kernels: frustum(l, r, b, t, n, f, depth) (project.h):
-//   [ 2n/(r−l)  0         (r+l)/(r−l)  0 ]
-//   [ 0         2n/(t−b)  (t+b)/(t−b)  0 ]     A = (n z_near − f z_far)/(f − n)
-//   [ 0         0         A            B ]     B = n f (z_near − z_far)/(f − n)
-//   [ 0         0         −1           0 ]
-// n ≤ 0 or f ≤ 0 admits no projection (every output undefined); a zero r − l, t − b or f − n
-// undefines its row's two entries.
-#include "view_volume.h"
+// The frustum kernels (the formula: frustum.h).
+#include "frustum.h"
+
+#include "fraction_kernel.h"
 
 namespace shadowproof::detail {
-namespace {
-
-struct frustum_form {
-  static constexpr int inputs = 6, entries = 16, denominators = 3;
-  static constexpr int degree = 2;
-
-  static void prepare(const double* in, const conventions&, double* x) { copy_inputs(in, 6, x); }
-  static bool undefined_case(const double* x, const conventions&) { return !(x[4] > 0) || !(x[5] > 0); }
-  static fraction_layout layout(const conventions& conv) {
-    fraction_layout l;
-    flat_row_layout(l, 0, 2, conv);
-    flat_row_layout(l, 1, 2, conv);
-    flat_row_layout(l, 2, 3, conv);
-    return l;
-  }
-
-  template <class N>
-  static void evaluate(const N* x, const conventions& conv, N* num, N* den) {
-    for (int j = 0; j < 16; ++j) num[j] = N(0.0);
-    const N& n = x[4];
-    const N& f = x[5];
-    for (int k = 0; k < 2; ++k) {
-      const N& lo = x[2 * k];
-      const N& hi = x[2 * k + 1];
-      den[k] = hi - lo;
-      num[k * 4 + k] = scaled(n, 1);
-      num[k * 4 + 2] = hi + lo;
-    }
-    den[2] = f - n;
-    perspective_depth_numerators(n, f, conv, num[10], num[11]);
-    num[14] = N(-1.0);
-  }
-};
-
-}  // namespace
 
 bool fast_frustum_f32(const double* in, const conventions& conv, fast_reference& out) {
   return fraction_kernel<frustum_form, float>(in, conv, out);

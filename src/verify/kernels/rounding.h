@@ -1,16 +1,19 @@
 #pragma once
 // Certified rounding tests: the output-type value nearest to every point within a bound of an
 // approximation, if they all share one; a quotient num/den of two bounded values likewise.
-// A test that cannot decide returns false and the kernel goes on with exact expansions
+// A test that cannot decide says so and the kernel goes on with exact expansions
 // (exact_rounding.h), which also settle ties. The exact value 0 rounds to +0, as the rational
-// oracle's does.
+// oracle's does. Written over the real type R (lanes.h): each test returns a mask, true in
+// the lanes it decides, and writes every lane's candidate.
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 
 #include "bounded.h"
+#include "lanes.h"
 
 namespace shadowproof::detail {
+inline namespace SHADOWPROOF_KERNEL_TARGET {
 
 // ===========================================================================================
 // To float (f32 kernels)
@@ -19,43 +22,48 @@ namespace shadowproof::detail {
 /// they share one. Round-to-nearest is monotone, so equal roundings of both ends decide every
 /// point between; `reach` pushes the ends out past the rounding of their own computation
 /// (|fl(y ± reach) − (y ± reach)| ≤ u (|y| + reach) + 2^-1075 ≤ reach − E).
-inline bool round_interval_to_float(double y, double E, double& out) {
-  const double reach = (E + 3 * unit_roundoff * std::fabs(y)) * inflate + 0x1p-1060;
-  const float a = static_cast<float>(y - reach), b = static_cast<float>(y + reach);
-  out = a == 0 ? 0.0 : static_cast<double>(a);
+template <class R>
+inline auto round_interval_to_float(R y, R E, R& out) {
+  const R reach = (E + R(3 * unit_roundoff) * magnitude(y)) * R(inflate) + R(0x1p-1060);
+  const R a = round_to_float_value(y - reach), b = round_to_float_value(y + reach);
+  out = select(a == R(0.0), R(0.0), a);
   return a == b;
 }
 
-/// The exact value within x correctly rounded to float.
-inline bool round_to_float(const bounded& x, double& out) {
-  if (x.e == 0) {  // x.v is the exact value: one correct rounding
-    const float a = static_cast<float>(x.v);
-    out = a == 0 ? 0.0 : static_cast<double>(a);
-    return true;
-  }
-  return round_interval_to_float(x.v, x.e * inflate, out);
+/// The exact value within x correctly rounded to float: one correct rounding when x is exact.
+template <class R>
+inline auto round_to_float(const basic_bounded<R>& x, R& out) {
+  const auto exact = x.e == R(0.0);
+  const R direct = round_to_float_value(x.v);
+  R via_bound;
+  const auto decided = round_interval_to_float(x.v, x.e * R(inflate), via_bound);
+  out = select(exact, select(direct == R(0.0), R(0.0), direct), via_bound);
+  return exact | decided;
 }
 
 /// A denominator D within d prepared once for every quotient over it: its inflated bound,
 /// a lower bound on |D|, and 1/d.v rounded once.
-struct bounded_denominator {
-  double v = 0, e = 0, lower = 0, inverse = 0;
-  bool usable = false;  ///< the bound excludes 0 (else no quotient over it is decided)
-  bounded_denominator() = default;
-  explicit bounded_denominator(const bounded& d) : v(d.v), e(d.e * inflate) {
-    lower = (std::fabs(v) - e) * (1 - 0x1p-50);  // the subtraction's rounding, pushed down
-    usable = lower > 0;
-    inverse = 1 / v;
+template <class R>
+struct basic_bounded_denominator {
+  R v = R(0.0), e = R(0.0), lower = R(0.0), inverse = R(0.0);
+  basic_bounded_denominator() = default;
+  explicit basic_bounded_denominator(const basic_bounded<R>& d) : v(d.v), e(d.e * R(inflate)) {
+    lower = (magnitude(v) - e) * R(1 - 0x1p-50);  // the subtraction's rounding, pushed down
+    inverse = R(1.0) / v;
   }
+  /// The bound excludes 0 (else no quotient over it is decided).
+  auto usable() const { return lower > R(0.0); }
 };
+using bounded_denominator = basic_bounded_denominator<double>;
 
 /// num/den correctly rounded to float. With q = fl(n · fl(1/d)) = (n/d)(1 + δ), |δ| ≤ 2u + u²:
 /// |N/D − q| ≤ (e_n + |n/d| e_d) / min |D| + 3u |q|, and |n/d| ≤ |q| (1 + 2^-50).
-inline bool round_quotient_to_float(const bounded& num, const bounded_denominator& den, double& out) {
-  const double q = num.v * den.inverse;
-  const double E = (num.e * inflate + std::fabs(q) * (1 + 0x1p-50) * den.e) / den.lower * inflate +
-                   3 * unit_roundoff * std::fabs(q);
-  return den.usable && round_interval_to_float(q, E, out);
+template <class R>
+inline auto round_quotient_to_float(const basic_bounded<R>& num, const basic_bounded_denominator<R>& den, R& out) {
+  const R q = num.v * den.inverse;
+  const R E = (num.e * R(inflate) + magnitude(q) * R(1 + 0x1p-50) * den.e) / den.lower * R(inflate) +
+              R(3 * unit_roundoff) * magnitude(q);
+  return den.usable() & round_interval_to_float(q, E, out);
 }
 
 // ===========================================================================================
@@ -66,91 +74,98 @@ inline bool round_quotient_to_float(const bounded& num, const bounded_denominato
 /// strictly inside half the gap to y's neighbour on each side (gaps halve exactly; a point
 /// exactly at half a gap is a tie, never decided here). Zero when hi + lo = 0 and E = 0 (every
 /// positive bound reaches 2^-1075, half the smallest subnormal, as doubles are its multiples).
-inline bool round_pair_to_double(double hi, double lo, double E, double& out) {
-  double y, r;
+template <class R>
+inline auto round_pair_to_double(R hi, R lo, R E, R& out) {
+  R y, r;
   two_sum(hi, lo, y, r);
-  const double slack = E * inflate * (1 + 0x1p-50);  // also covers the rounding of the rooms below
-  if (y == 0) {
-    out = 0;
-    return slack == 0;
-  }
-  const double magnitude = std::fabs(y);
-  if (!(magnitude < 0x1p1000)) return false;  // no overflow threshold to consider
-  const double outward = y > 0 ? r : -r;      // r measured away from zero
-  // Neighbours of a positive finite double: its bit pattern ± 1.
-  std::uint64_t bits;
-  std::memcpy(&bits, &magnitude, sizeof bits);
-  const std::uint64_t bits_above = bits + 1, bits_below = bits - 1;
-  double above, below;
-  std::memcpy(&above, &bits_above, sizeof above);
-  std::memcpy(&below, &bits_below, sizeof below);
-  const double half_up = (above - magnitude) / 2, half_down = (magnitude - below) / 2;
-  out = y;
-  return slack < half_up - outward && slack < half_down + outward;
+  const R slack = E * R(inflate * (1 + 0x1p-50));  // also covers the rounding of the rooms below
+  const R size = magnitude(y);
+  const R outward = select(y > R(0.0), r, -r);  // r measured away from zero
+  R above, below;
+  neighbours(size, above, below);
+  const R half_up = (above - size) * R(0.5), half_down = (size - below) * R(0.5);
+  // y = 0: the neighbours are meaningless and every comparison below with NaN is false.
+  const auto inside = (slack < half_up - outward) & (slack < half_down + outward) & (size < R(0x1p1000)) &
+                      (size > R(0.0));
+  const auto zero = (y == R(0.0)) & (slack == R(0.0));
+  out = select(y == R(0.0), R(0.0), y);
+  return inside | zero;
 }
 
 /// The exact value within x correctly rounded to double.
-inline bool round_to_double(const bounded_pair& x, double& out) {
-  if (x.e == 0 && x.lo == 0) {  // an exact double
-    out = x.hi == 0 ? 0.0 : x.hi;
-    return true;
-  }
-  return round_pair_to_double(x.hi, x.lo, x.e, out);
+template <class R>
+inline auto round_to_double(const basic_bounded_pair<R>& x, R& out) {
+  const auto exact = (x.e == R(0.0)) & (x.lo == R(0.0));  // an exact double
+  R via_bound;
+  const auto decided = round_pair_to_double(x.hi, x.lo, x.e, via_bound);
+  out = select(exact, select(x.hi == R(0.0), R(0.0), x.hi), via_bound);
+  return exact | decided;
 }
 
 /// A double-double denominator D within d, prepared once for every quotient over it.
-struct pair_denominator {
-  double hi = 0, lo = 0, e = 0, lower = 0, inverse = 0;
-  bool usable = false;  ///< the bound excludes 0
-  pair_denominator() = default;
-  explicit pair_denominator(const bounded_pair& d) : hi(d.hi), lo(d.lo), e(d.e * inflate) {
-    lower = (std::fabs(hi) - std::fabs(lo) - e) * (1 - 0x1p-50);
-    usable = lower > 0;
-    inverse = 1 / hi;
+template <class R>
+struct basic_pair_denominator {
+  R hi = R(0.0), lo = R(0.0), e = R(0.0), lower = R(0.0), inverse = R(0.0);
+  basic_pair_denominator() = default;
+  explicit basic_pair_denominator(const basic_bounded_pair<R>& d) : hi(d.hi), lo(d.lo), e(d.e * R(inflate)) {
+    lower = (magnitude(hi) - magnitude(lo) - e) * R(1 - 0x1p-50);
+    inverse = R(1.0) / hi;
   }
+  /// The bound excludes 0.
+  auto usable() const { return lower > R(0.0); }
 };
+using pair_denominator = basic_pair_denominator<double>;
 
 /// num/den as q1 + q2 within ± E: q1 = n.hi/d.hi (through the reciprocal), the remainder
 /// R1 = n − q1 d in pair arithmetic (its own bound r1.e), q2 = R1/d.hi. Then
 ///   N − (q1 + q2) D = (N − n) − (q1 + q2)(D − d) + (r1 − q2 d.hi) − q2 d.lo ± r1.e,
 /// with |r1.hi − q2 d.hi| ≤ 3u |r1.hi|, so
 ///   |N/D − (q1 + q2)| ≤ (e_n + (|q1| + |q2|) e_d + 3u |r1.hi| + |r1.lo| + r1.e + |q2 d.lo|) / min |D|.
-inline void pair_quotient(const bounded_pair& num, const pair_denominator& den, double& q1, double& q2, double& E) {
+template <class R>
+inline void pair_quotient(const basic_bounded_pair<R>& num, const basic_pair_denominator<R>& den, R& q1, R& q2,
+                          R& E) {
   q1 = num.hi * den.inverse;
-  const bounded_pair r1 = bounded_pair(num.hi, num.lo, 0) - bounded_pair(q1) * bounded_pair(den.hi, den.lo, 0);
+  const basic_bounded_pair<R> r1 = basic_bounded_pair<R>(num.hi, num.lo, R(0.0)) -
+                                   basic_bounded_pair<R>(q1) * basic_bounded_pair<R>(den.hi, den.lo, R(0.0));
   q2 = r1.hi * den.inverse;
-  E = (num.e * inflate + (std::fabs(q1) + std::fabs(q2)) * den.e + 3 * unit_roundoff * std::fabs(r1.hi) +
-       std::fabs(r1.lo) + r1.e * inflate + std::fabs(q2 * den.lo) * (1 + 0x1p-50)) /
-      den.lower * inflate;
+  E = (num.e * R(inflate) + (magnitude(q1) + magnitude(q2)) * den.e + R(3 * unit_roundoff) * magnitude(r1.hi) +
+       magnitude(r1.lo) + r1.e * R(inflate) + magnitude(q2 * den.lo) * R(1 + 0x1p-50)) /
+      den.lower * R(inflate);
 }
 
-/// num/den correctly rounded to double.
-inline bool round_quotient_to_double(const bounded_pair& num, const pair_denominator& den, double& out) {
-  if (!den.usable) return false;
-  if (num.hi == 0 && num.e == 0) {  // exactly 0 (lo = 0 when hi = 0)
-    out = 0;
-    return true;
-  }
-  double q1, q2, E;
+/// num/den correctly rounded to double; an exactly zero numerator gives 0.
+template <class R>
+inline auto round_quotient_to_double(const basic_bounded_pair<R>& num, const basic_pair_denominator<R>& den, R& out) {
+  R q1, q2, E, rounded;
   pair_quotient(num, den, q1, q2, E);
-  return round_pair_to_double(q1, q2, E, out);
+  const auto decided = round_pair_to_double(q1, q2, E, rounded);
+  const auto zero = (num.hi == R(0.0)) & (num.e == R(0.0));  // lo = 0 when hi = 0
+  out = select(zero, R(0.0), rounded);
+  return den.usable() & (zero | decided);
 }
 
 // ===========================================================================================
 // The two families under one name, for kernels written once over the filter number type.
 
-inline bool round_value(const bounded& x, double& out) { return round_to_float(x, out); }
-inline bool round_value(const bounded_pair& x, double& out) { return round_to_double(x, out); }
+template <class R>
+inline auto round_value(const basic_bounded<R>& x, R& out) { return round_to_float(x, out); }
+template <class R>
+inline auto round_value(const basic_bounded_pair<R>& x, R& out) { return round_to_double(x, out); }
 
 /// The prepared denominator of each filter number type.
-inline bounded_denominator prepare(const bounded& d) { return bounded_denominator(d); }
-inline pair_denominator prepare(const bounded_pair& d) { return pair_denominator(d); }
+template <class R>
+inline basic_bounded_denominator<R> prepare(const basic_bounded<R>& d) { return basic_bounded_denominator<R>(d); }
+template <class R>
+inline basic_pair_denominator<R> prepare(const basic_bounded_pair<R>& d) { return basic_pair_denominator<R>(d); }
 
-inline bool round_quotient(const bounded& n, const bounded_denominator& d, double& out) {
+template <class R>
+inline auto round_quotient(const basic_bounded<R>& n, const basic_bounded_denominator<R>& d, R& out) {
   return round_quotient_to_float(n, d, out);
 }
-inline bool round_quotient(const bounded_pair& n, const pair_denominator& d, double& out) {
+template <class R>
+inline auto round_quotient(const basic_bounded_pair<R>& n, const basic_pair_denominator<R>& d, R& out) {
   return round_quotient_to_double(n, d, out);
 }
 
+}  // namespace SHADOWPROOF_KERNEL_TARGET
 }  // namespace shadowproof::detail

@@ -9,6 +9,7 @@
 
 #include "fraction_kernel.h"
 
+
 namespace shadowproof::detail {
 namespace {
 
@@ -102,7 +103,7 @@ bool shadow_point_kernel(const double* in, const conventions& conv, fast_referen
   copy_inputs(in, 4, x);
   canonical_light(in + 4, conv, x + 4);
   copy_inputs(in + 8, 3, x + 8);
-  if (!kernel_inputs<F>(x, 11, 3)) return false;  // N_i = s V_i − t L_i, D = s − w t: degree 3
+  if (!kernel_inputs<F, 3, 11>(x)) return false;  // N_i = s V_i − t L_i, D = s − w t: degree 3
   out = fast_reference{};
   out.count = 3;
   const int filtered = kernels_exact_only ? 0 : shadow_point_stage<F, filter_number<F>>(x, conv, out);
@@ -172,7 +173,7 @@ bool image_class_kernel(const double* in, const conventions& conv, const double*
   canonical_light(in + 4, conv, x + 4);
   copy_inputs(in + 8, 3, x + 8);
   // The products w G_i must be exact (f32) or exact pairs (f64) like those of the inputs.
-  if (!kernel_inputs<F>(x, 11, 4) || !kernel_inputs<F>(got, 3, 4)) return false;  // a: w² G V, degree 4
+  if (!kernel_inputs<F, 4, 11>(x) || !kernel_inputs<F, 4, 3>(got)) return false;  // a: w² G V, degree 4
   const int filtered = kernels_exact_only ? 0 : image_class_stage<filter_number<F>>(x, got, out);
   if (filtered != 0) return filtered > 0;
   return image_class_stage<expansion>(x, got, out) > 0;
@@ -181,7 +182,7 @@ bool image_class_kernel(const double* in, const conventions& conv, const double*
 // P·(G, 1) = Σ P_i G_i + P_3, exact products of two values of the case's type.
 template <class F>
 bool plane_value_kernel(const double* in, const double* got, double& out) {
-  if (!kernel_inputs<F>(in, 4, 2) || !kernel_inputs<F>(got, 3, 2)) return false;
+  if (!kernel_inputs<F, 2, 4>(in) || !kernel_inputs<F, 2, 3>(got)) return false;
   // Rounded to double, so the f64 filter (double-double) serves both types.
   bounded_pair v(in[3]);
   for (int i = 0; i < 3; ++i) v = v + exact_product(bounded_pair(in[i]), bounded_pair(got[i]));

@@ -1,18 +1,23 @@
 #pragma once
 // What the view-volume kernels (ortho, frustum, perspective) share: the NDC depths of the near
 // and far planes, and the layout of a row that a flat extent leaves undefined.
-#include "fraction_kernel.h"
-#include "shadowproof/constructions/project.h"
+#include "fraction_form.h"
+#include "shadowproof/verify/conventions.h"
 
 namespace shadowproof::detail {
+inline namespace SHADOWPROOF_KERNEL_TARGET {
 
 /// z_near and z_far of the depth convention as small integers (project.h's ndc_depth_range).
 struct depth_ndc {
   int near_ndc, far_ndc;
 };
 inline depth_ndc depth_of(const conventions& conv) {
-  const depth_range<int> z = ndc_depth_range<int>(conv.depth);
-  return {z.near_ndc, z.far_ndc};
+  switch (conv.depth) {
+    case depth_convention::gl: return {-1, 1};
+    case depth_convention::d3d: return {0, 1};
+    case depth_convention::reverse_z: return {1, 0};
+  }
+  return {-1, 1};
 }
 
 /// The depth row of a central projection looking down −z (project.h):
@@ -29,10 +34,9 @@ void perspective_depth_numerators(const N& n, const N& f, const conventions& con
 /// builder declared symmetric has a zero centre offset by construction on the x and y rows
 /// (view_volume.h of the operations).
 inline void flat_row_layout(fraction_layout& l, int k, int offset, const conventions& conv) {
-  l.denominator[k * 4 + k] = static_cast<signed char>(k);
-  l.denominator[k * 4 + offset] = static_cast<signed char>(k);
   l.zero_when_undefined[k * 4 + offset] = conv.symmetric_view && k < 2;
   l.on_zero[k] = zero_denominator::undefines_entries;
 }
 
+}  // namespace SHADOWPROOF_KERNEL_TARGET
 }  // namespace shadowproof::detail
