@@ -18,6 +18,7 @@
 #include "shadowproof/core/ulp.h"
 #include "shadowproof/verify/cases.h"
 #include "shadowproof/verify/operation.h"
+#include "shadowproof/verify/grade.h"
 #include "shadowproof/verify/protocol.h"
 
 using namespace shadowproof;
@@ -159,7 +160,32 @@ double rounded(const rational& num, const rational& den) {
   return out;
 }
 
+template <class F>
+double rounded_value(const rational& x) {
+  double out = -1;
+  REQUIRE(detail::round_exact_value<F>(expansion_of(x), out));
+  return out;
+}
+
 }  // namespace
+
+TEST_CASE("exact sums at a tie round to even", "[kernels][rounding]") {
+  const rational two24 = exact_value(0x1p24), two53 = exact_value(0x1p53);
+  CHECK(rounded_value<float>(two24 + 1) == 0x1p24);
+  CHECK(rounded_value<float>(two24 + 3) == 0x1p24 + 4);
+  CHECK(rounded_value<float>(-(two24 + 3)) == -(0x1p24 + 4));
+  CHECK(rounded_value<float>(two24 + 1 + exact_value(0x1p-80)) == 0x1p24 + 2);
+  CHECK(rounded_value<float>(two24 + 1 - exact_value(0x1p-80)) == 0x1p24);
+  CHECK(rounded_value<double>(two53 + 1) == 0x1p53);
+  CHECK(rounded_value<double>(two53 + 3) == 0x1p53 + 4);
+  CHECK(rounded_value<double>(two53 + 1 + exact_value(0x1p-200)) == 0x1p53 + 2);
+  CHECK(rounded_value<double>(two53 + 1 - exact_value(0x1p-200)) == 0x1p53);
+  CHECK(rounded_value<double>(exact_value(1.0) + exact_value(0x1p-53)) == 1.0);  // halfway to the next double
+  CHECK(rounded_value<double>(exact_value(1.0) - exact_value(0x1p-54)) == 1.0);  // halfway below 1: even is 1
+  CHECK(rounded_value<double>(exact_value(1.0) - exact_value(0x1p-54) - exact_value(0x1p-300)) == 1 - 0x1p-53);
+  CHECK(rounded_value<float>(exact_value(0x1p-150)) == 0);
+  CHECK(std::isinf(rounded_value<float>(exact_value(0x1.ffffffp127))));
+}
 
 TEST_CASE("exact quotients at a float tie round to even", "[kernels][rounding]") {
   const rational two24 = exact_value(0x1p24);
@@ -309,6 +335,62 @@ TEST_CASE("every kernel gives the rational oracle's outputs bit for bit", "[kern
 TEST_CASE("the kernels' exact stage alone gives the rational oracle's outputs bit for bit", "[kernels][oracle]") {
   detail::kernels_exact_only = true;
   check_every_kernel(60, 900);
+  detail::kernels_exact_only = false;
+}
+
+namespace {
+
+// The image-class and plane-value kernels of shadow-point against the all-rational grade of
+// the same image: the library's own float formula, the point itself, the light, and those
+// one ulp off.
+void check_image_kernels(std::uint64_t seed) {
+  std::size_t checked = 0, declined = 0;
+  for (scalar_type type : {scalar_type::f32, scalar_type::f64})
+    for (const conventions& conv : conventions_for(operation::shadow_point))
+      for (input_class cls : {input_class::regular, input_class::near_degenerate, input_class::degenerate}) {
+        const auto cases = generate_cases(operation::shadow_point, type, 150, seed, cls, conv);
+        std::mt19937_64 rng(seed);
+        for (const auto& c : cases) {
+          const double* in = c.inputs.data();
+          double got[3];
+          const std::uint64_t pick = rng() % 4;
+          for (int i = 0; i < 3; ++i) {
+            const double w = in[7] == 0 ? 1 : in[7];
+            got[i] = pick == 0 ? in[8 + i] : (pick == 1 ? in[4 + i] / w : in[8 + i] * 0.75 + in[4 + i] * 0.25);
+            got[i] = type == scalar_type::f32 ? static_cast<double>(static_cast<float>(got[i])) : got[i];
+            if (rng() % 3 == 0)
+              got[i] = type == scalar_type::f32 ? std::nextafter(static_cast<float>(got[i]), 1e30f) : std::nextafter(got[i], 1e300);
+          }
+          const case_grade want = grade_case(c, conv, got, oracle_mode::naive);
+          INFO("case " << case_json_line(c) << ", image " << hex_string(got[0]) << " " << hex_string(got[1]) << " "
+                       << hex_string(got[2]));
+          image_class k;
+          const bool f32 = type == scalar_type::f32;
+          if (f32 ? detail::fast_image_class_f32(in, conv, got, k) : detail::fast_image_class_f64(in, conv, got, k)) {
+            REQUIRE(want.got_class == k);
+            ++checked;
+          } else {
+            ++declined;
+          }
+          double v;
+          if (f32 ? detail::fast_plane_value_f32(in, got, v) : detail::fast_plane_value_f64(in, got, v)) {
+            REQUIRE(want.plane_value.has_value());
+            REQUIRE(std::memcmp(&v, &*want.plane_value, sizeof v) == 0);
+            ++checked;
+          } else {
+            ++declined;
+          }
+        }
+      }
+  CHECK(declined * 20 <= checked);
+}
+
+}  // namespace
+
+TEST_CASE("the image-class and plane-value kernels agree with the rational grade", "[kernels][oracle]") {
+  check_image_kernels(71);
+  detail::kernels_exact_only = true;
+  check_image_kernels(72);
   detail::kernels_exact_only = false;
 }
 

@@ -145,9 +145,33 @@ void load_case(const case_batch& b, std::size_t i, test_case& c, double* got) {
   for (std::size_t j = 0; j < sig.output_count; ++j) got[j] = b.outputs[j * b.count + i];
 }
 
+// One output column over cases [first, end): every output whose exact value is defined and
+// whose float value and reference are finite (the common case) gets its ulps and the counted
+// flag, without a branch; the others get `special`, for grade_special. The case's maximum and
+// worst output follow (the first output reaching the maximum, as grade_case keeps it).
+template <class F>
+bool grade_column(const double* __restrict got, const double* __restrict ref, const std::uint32_t* __restrict undefined,
+                  std::size_t j, std::size_t first, std::size_t end, std::uint64_t* __restrict ulps,
+                  std::uint8_t* __restrict flags, std::uint64_t* __restrict max_ulps, std::uint8_t* __restrict worst) {
+  constexpr std::uint8_t special = 0x80;
+  bool any_special = false;
+  for (std::size_t i = first; i < end; ++i) {
+    const F got_f = static_cast<F>(got[i]), ref_f = static_cast<F>(ref[i]);
+    const bool common = !((undefined[i] >> j) & 1) & std::isfinite(got_f) & std::isfinite(ref_f);
+    const std::uint64_t d = common ? ulps_between<F>(got_f, ref_f) : 0;
+    ulps[i] = d;
+    flags[i] = common ? batch_grades::counted : special;
+    const bool worse = d > max_ulps[i];
+    max_ulps[i] = worse ? d : max_ulps[i];
+    worst[i] = worse ? static_cast<std::uint8_t>(j) : worst[i];
+    any_special |= !common;
+  }
+  return any_special;
+}
+
 template <class F>
 void grade_columns_range(const case_batch& b, const conventions& conv, const batch_references& refs, batch_grades& out,
-                 std::size_t first, std::size_t end) {
+                         std::size_t first, std::size_t end, batch_path path) {
   const std::size_t count = b.count, n = signature(b.op).output_count;
   test_case scratch;
   double got[16];
@@ -158,39 +182,48 @@ void grade_columns_range(const case_batch& b, const conventions& conv, const bat
     }
     return;
   }
-  // Output by output over the cases (the common case has no branch), then the per-case summary.
+  std::uint64_t* max_ulps = out.max_ulps.data();
+  std::uint8_t* worst = out.worst_output.data();
   for (std::size_t i = first; i < end; ++i) {
-    out.max_ulps[i] = 0;
-    out.worst_output[i] = 0;
+    max_ulps[i] = 0;
+    worst[i] = 0;
     out.nonfinite[i] = out.garbage[i] = out.misclassified[i] = 0;
     out.got_class[i] = -1;
     out.plane_value[i] = std::numeric_limits<double>::quiet_NaN();
   }
-  for (std::size_t j = 0; j < n; ++j) {
-    const double* got_column = b.outputs.data() + j * count;
-    const double* ref_column = refs.values.data() + j * count;
-    std::uint64_t* ulps = out.ulps.data() + j * count;
-    std::uint8_t* flags = out.flags.data() + j * count;
+  // Output by output over the cases, the common case without a branch (AVX2 where chosen).
+  const bool use_avx2 = path != batch_path::generic && avx2_batch_available();
+  const detail::grade_column_function grade = use_avx2 ? detail::avx2_grade_column(b.type) : grade_column<F>;
+  bool any_special = false;
+  for (std::size_t j = 0; j < n; ++j)
+    any_special |= grade(b.outputs.data() + j * count, refs.values.data() + j * count, refs.undefined.data(), j,
+                                   first, end, out.ulps.data() + j * count, out.flags.data() + j * count, max_ulps, worst);
+  // The cases with a non-finite, garbage or undefined output: grade_case's rules, case by case
+  // (a non-finite or garbage output is worse than any finite error: the first one is the worst).
+  if (any_special) {
     for (std::size_t i = first; i < end; ++i) {
-      const bool defined = !((refs.undefined[i] >> j) & 1);
-      grade_output<F>(got_column + i, ref_column + i, defined, ulps[i], flags[i]);
-      const bool worse = (flags[i] & batch_grades::counted) && ulps[i] > out.max_ulps[i];
-      out.max_ulps[i] = worse ? ulps[i] : out.max_ulps[i];
-      out.worst_output[i] = worse ? static_cast<std::uint8_t>(j) : out.worst_output[i];
-    }
-  }
-  // A non-finite or garbage output is worse than any finite error: the first one is the worst.
-  for (std::size_t i = first; i < end; ++i) {
-    bool first_bad = true;
-    for (std::size_t j = 0; j < n; ++j) {
-      const std::uint8_t f = out.flags[j * count + i];
-      const bool nonfinite = f & batch_grades::nonfinite_output, garbage = f & batch_grades::garbage_output;
-      out.nonfinite[i] = static_cast<std::uint8_t>(out.nonfinite[i] + nonfinite);
-      out.garbage[i] = static_cast<std::uint8_t>(out.garbage[i] + garbage);
-      if ((nonfinite || garbage) && first_bad) {
-        out.worst_output[i] = static_cast<std::uint8_t>(j);
-        first_bad = false;
+      bool special = false;
+      for (std::size_t j = 0; j < n; ++j) special |= (out.flags[j * count + i] & 0x80) != 0;
+      if (!special) continue;
+      std::uint64_t max = 0;
+      std::size_t worst_output = 0;
+      int first_bad = -1;
+      for (std::size_t j = 0; j < n; ++j) {
+        std::uint64_t& u = out.ulps[j * count + i];
+        std::uint8_t& f = out.flags[j * count + i];
+        if (f & 0x80) grade_output<F>(b.outputs.data() + j * count + i, refs.values.data() + j * count + i,
+                                      !((refs.undefined[i] >> j) & 1), u, f);
+        if ((f & batch_grades::counted) && u > max) {
+          max = u;
+          worst_output = j;
+        }
+        const bool nonfinite = f & batch_grades::nonfinite_output, garbage = f & batch_grades::garbage_output;
+        out.nonfinite[i] = static_cast<std::uint8_t>(out.nonfinite[i] + nonfinite);
+        out.garbage[i] = static_cast<std::uint8_t>(out.garbage[i] + garbage);
+        if ((nonfinite || garbage) && first_bad < 0) first_bad = static_cast<int>(j);
       }
+      max_ulps[i] = max;
+      worst[i] = static_cast<std::uint8_t>(first_bad >= 0 ? static_cast<std::size_t>(first_bad) : worst_output);
     }
   }
   // What the outputs mean beyond their values (shadow-point): grade_case's own code.
@@ -257,35 +290,38 @@ void compute_references(const case_batch& batch, const conventions& conv, batch_
   detail::compute_references_range(batch, conv, out, 0, batch.count, counters, path);
 }
 
-void grade_batch(const case_batch& batch, const conventions& conv, const batch_references& refs, batch_grades& out) {
+void grade_batch(const case_batch& batch, const conventions& conv, const batch_references& refs, batch_grades& out,
+                 batch_path path) {
   detail::prepare_grades(batch, out);
-  detail::grade_range(batch, conv, refs, out, 0, batch.count);
+  detail::grade_range(batch, conv, refs, out, 0, batch.count, path);
 }
 
 namespace detail {
 
+// Every element is written by the range functions, so resizing (which keeps a batch's storage
+// from one call to the next) is enough.
 void prepare_references(const case_batch& batch, batch_references& out) {
   const std::size_t n = signature(batch.op).output_count;
   out.count = batch.count;
-  out.values.assign(n * batch.count, 0.0);
-  out.undefined.assign(batch.count, 0);
-  out.point_class.assign(batch.count, -1);
-  out.decided_by.assign(batch.count, 0);
+  out.values.resize(n * batch.count);
+  out.undefined.resize(batch.count);
+  out.point_class.resize(batch.count);
+  out.decided_by.resize(batch.count);
 }
 
 void prepare_grades(const case_batch& batch, batch_grades& out) {
   const std::size_t n = signature(batch.op).output_count;
   out.count = batch.count;
   out.outputs_per_case = n;
-  out.ulps.assign(n * batch.count, 0);
-  out.flags.assign(n * batch.count, 0);
-  out.max_ulps.assign(batch.count, 0);
-  out.worst_output.assign(batch.count, 0);
-  out.nonfinite.assign(batch.count, 0);
-  out.garbage.assign(batch.count, 0);
-  out.misclassified.assign(batch.count, 0);
-  out.got_class.assign(batch.count, -1);
-  out.plane_value.assign(batch.count, std::numeric_limits<double>::quiet_NaN());
+  out.ulps.resize(n * batch.count);
+  out.flags.resize(n * batch.count);
+  out.max_ulps.resize(batch.count);
+  out.worst_output.resize(batch.count);
+  out.nonfinite.resize(batch.count);
+  out.garbage.resize(batch.count);
+  out.misclassified.resize(batch.count);
+  out.got_class.resize(batch.count);
+  out.plane_value.resize(batch.count);
 }
 
 void run_implementation_range(const implementation& impl, case_batch& batch, std::size_t first, std::size_t end) {
@@ -354,9 +390,9 @@ void compute_references_range(const case_batch& batch, const conventions& conv, 
 }
 
 void grade_range(const case_batch& batch, const conventions& conv, const batch_references& refs, batch_grades& out,
-                 std::size_t first, std::size_t end) {
-  if (batch.type == scalar_type::f32) grade_columns_range<float>(batch, conv, refs, out, first, end);
-  else grade_columns_range<double>(batch, conv, refs, out, first, end);
+                 std::size_t first, std::size_t end, batch_path path) {
+  if (batch.type == scalar_type::f32) grade_columns_range<float>(batch, conv, refs, out, first, end, path);
+  else grade_columns_range<double>(batch, conv, refs, out, first, end, path);
 }
 
 }  // namespace detail

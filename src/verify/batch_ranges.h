@@ -18,6 +18,6 @@ void run_implementation_range(const implementation& impl, case_batch& batch, std
 void compute_references_range(const case_batch& batch, const conventions& conv, batch_references& out,
                               std::size_t first, std::size_t end, oracle_counters* counters, batch_path path);
 void grade_range(const case_batch& batch, const conventions& conv, const batch_references& refs, batch_grades& out,
-                 std::size_t first, std::size_t end);
+                 std::size_t first, std::size_t end, batch_path path);
 
 }  // namespace shadowproof::detail

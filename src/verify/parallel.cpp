@@ -88,7 +88,7 @@ void grade_batch_in_parallel(case_batch& batch, const conventions& conv, batch_r
   for_slices(batch.count, jobs, 4096, counters, [&](std::size_t first, std::size_t end, oracle_counters& mine) {
     if (impl) detail::run_implementation_range(*impl, batch, first, end);
     detail::compute_references_range(batch, conv, refs, first, end, &mine, path);
-    detail::grade_range(batch, conv, refs, grades, first, end);
+    detail::grade_range(batch, conv, refs, grades, first, end, path);
   });
 }
 

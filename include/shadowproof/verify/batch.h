@@ -48,8 +48,9 @@ test_case case_at(const case_batch& batch, std::size_t i);
 /// impl.type are the batch's.
 void run_implementation(const implementation& impl, case_batch& batch);
 
-/// Which batch filter to use: the fastest the processor supports, or a given one (for tests
-/// and benchmarks; `avx2` on a processor without AVX2 and FMA falls back to `generic`).
+/// Which batch code to use (filters and column grader): the fastest the processor supports, or
+/// a given one (for tests and benchmarks; `avx2` on a processor without AVX2 and FMA falls
+/// back to `generic`).
 enum class batch_path { automatic, generic, avx2 };
 
 /// True when this build has the AVX2 filters and the processor running it has AVX2 and FMA.
@@ -93,8 +94,10 @@ struct batch_grades {
 };
 
 /// Grades the batch's outputs against `refs` (from compute_references with the same
-/// conventions). Cases graded up to scale, and the meaning of shadow-point images (classes and
+/// conventions), column by column (eight floats or four doubles at a time with AVX2, per
+/// `path`). Cases graded up to scale, and the meaning of shadow-point images (classes and
 /// plane values), go through grade_case's own code one case at a time.
-void grade_batch(const case_batch& batch, const conventions& conv, const batch_references& refs, batch_grades& out);
+void grade_batch(const case_batch& batch, const conventions& conv, const batch_references& refs, batch_grades& out,
+                 batch_path path = batch_path::automatic);
 
 }  // namespace shadowproof

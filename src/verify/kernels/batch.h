@@ -40,4 +40,17 @@ batch_filter avx2_batch_filter(operation op, scalar_type type);
 /// Whether the processor running this program has AVX2 and FMA (checked once).
 bool avx2_supported();
 
+/// Grades output column j of cases [first, end) (batch.cpp's grade_column): where the exact
+/// output is defined (bit j of undefined[i] clear) and the float value of got[i] and of ref[i]
+/// are finite, ulps[i] = their distance in ulps of the type and flags[i] = 1 (counted), and
+/// max_ulps[i] / worst[i] become ulps[i] / j when it exceeds max_ulps[i]; elsewhere ulps[i] = 0
+/// and flags[i] = 0x80 (left to the caller). Returns whether any output was left.
+using grade_column_function = bool (*)(const double* got, const double* ref, const std::uint32_t* undefined,
+                                       std::size_t j, std::size_t first, std::size_t end, std::uint64_t* ulps,
+                                       std::uint8_t* flags, std::uint64_t* max_ulps, std::uint8_t* worst);
+
+/// The AVX2 column grader for outputs of `type`, or null when this build has none. Callable
+/// only when avx2_supported().
+grade_column_function avx2_grade_column(scalar_type type);
+
 }  // namespace shadowproof::detail

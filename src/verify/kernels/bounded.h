@@ -15,7 +15,7 @@
 //
 // Bounds. Round-to-nearest gives |fl(x) − x| ≤ u |fl(x)| (u = 2^-53) in the normal range, and
 // sums are exact in the subnormal range; each operation adds the rounding errors it makes,
-// with products adding the smallest subnormal for underflow. The bound's own computation
+// with products adding underflow_slack (error_free.h) for underflow. The bound's own computation
 // rounds too, always in operations on non-negative terms; a kernel performs far fewer than
 // 2^10 of them, so the bound computed in floating point is below the true one by a factor of at
 // most (1 + 2^-41): every decision multiplies the bound by `inflate` = 1 + 2^-40 first.
@@ -26,8 +26,8 @@
 // 2^(1000/d − 1)] (kernels check this first: f64_input_in_range): every exact product of
 // d inputs, and every component of an exact expansion built from them (a multiple of
 // 2^(d (e_min − 52))), then lies within [2^-969, 2^1000], so every two_product of two such is
-// exact (error_free.h). Products of approximations that come closer to underflow add the
-// smallest subnormal per rounding to their bound.
+// exact (error_free.h). Products of approximations that come closer to underflow add
+// underflow_slack to their bound.
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -83,12 +83,18 @@ template <class R>
 inline basic_bounded<R> operator*(const basic_bounded<R>& a, const basic_bounded<R>& b) {
   const R p = a.v * b.v;
   return {p, magnitude(a.v) * b.e + magnitude(b.v) * a.e + a.e * b.e + R(unit_roundoff) * magnitude(p) +
-                 R(smallest_subnormal)};
+                 R(underflow_slack)};
 }
 /// a · b for two f32 inputs: exact in double (48 significant bits at most).
 template <class R>
 inline basic_bounded<R> exact_product(const basic_bounded<R>& a, const basic_bounded<R>& b) {
   return basic_bounded<R>(a.v * b.v);
+}
+/// An output that is the product of two inputs, a · b, by its correct rounding to the output
+/// type: for f32 inputs the product itself, exact in double.
+template <class R>
+inline basic_bounded<R> rounded_product(const basic_bounded<R>& a, const basic_bounded<R>& b) {
+  return exact_product(a, b);
 }
 /// a · 2^k, exact (k small: no over- or underflow).
 template <class R>
@@ -152,8 +158,8 @@ inline basic_bounded_pair<R> operator-(const basic_bounded_pair<R>& a, const bas
   return a + (-b);
 }
 // a.hi b.hi exactly as p + q; the cross terms a.hi b.lo + a.lo b.hi rounded; a.lo b.lo (below
-// u² |a b|) left to the bound; then the propagated errors |a| b.e + |b| a.e + a.e b.e, and the
-// smallest subnormal for each rounding that might underflow.
+// u² |a b|) left to the bound; then the propagated errors |a| b.e + |b| a.e + a.e b.e, and
+// underflow_slack for the roundings that might underflow (at most 8 · 2^-1075).
 template <class R>
 inline basic_bounded_pair<R> operator*(const basic_bounded_pair<R>& a, const basic_bounded_pair<R>& b) {
   R p, q;
@@ -165,7 +171,7 @@ inline basic_bounded_pair<R> operator*(const basic_bounded_pair<R>& a, const bas
   two_sum(p, t, r.hi, r.lo);
   const R abs_a = magnitude(a.hi) + magnitude(a.lo), abs_b = magnitude(b.hi) + magnitude(b.lo);
   r.e = R(unit_roundoff) * (magnitude(c1) + magnitude(c2) + magnitude(c) + magnitude(t)) +
-        magnitude(a.lo) * magnitude(b.lo) + abs_a * b.e + abs_b * a.e + a.e * b.e + R(8 * smallest_subnormal);
+        magnitude(a.lo) * magnitude(b.lo) + abs_a * b.e + abs_b * a.e + a.e * b.e + R(underflow_slack);
   return r;
 }
 /// a · b for two f64 inputs: exact as a pair (two_product).
@@ -174,6 +180,13 @@ inline basic_bounded_pair<R> exact_product(const basic_bounded_pair<R>& a, const
   basic_bounded_pair<R> r;
   two_product(a.hi, b.hi, r.hi, r.lo);
   return r;
+}
+/// An output that is the product of two inputs, a · b, by its correct rounding to the output
+/// type: for f64 inputs IEEE multiplication rounds correctly, so fl(a · b) stands exactly for
+/// the output's rounded value (not for the product; use it only as an output by itself).
+template <class R>
+inline basic_bounded_pair<R> rounded_product(const basic_bounded_pair<R>& a, const basic_bounded_pair<R>& b) {
+  return basic_bounded_pair<R>(a.hi * b.hi);
 }
 /// a · 2^k, exact (k small: no over- or underflow).
 template <class R>

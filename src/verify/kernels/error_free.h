@@ -25,8 +25,11 @@ inline namespace SHADOWPROOF_KERNEL_TARGET {
 
 /// Unit roundoff of double: |fl(x) − x| ≤ unit_roundoff · |fl(x)| for x in the normal range.
 constexpr double unit_roundoff = 0x1p-53;
-/// The smallest positive subnormal double (the absolute rounding error near underflow).
-constexpr double smallest_subnormal = 0x1p-1074;
+/// An absolute error bound for one rounding near underflow: at least half the smallest
+/// subnormal (2^-1075), and itself a normal double, because arithmetic on subnormal operands
+/// takes a microcode assist of a hundred cycles or more on x86. Negligible beside the values
+/// the kernels decide (above 2^-920, bounded.h).
+constexpr double underflow_slack = 0x1p-1000;
 
 /// s = fl(a + b), e = (a + b) − s exactly (Knuth's TwoSum, no condition on |a|, |b|). R is
 /// double or a vector of doubles (lanes.h).

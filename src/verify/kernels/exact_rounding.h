@@ -121,10 +121,62 @@ bool round_exact_quotient(const expansion& num, const expansion& den, double& ou
   }
 }
 
-/// x correctly rounded to F (float or double), +0 for 0; false as round_exact_quotient.
+/// x correctly rounded to F (float or double), +0 for 0: the quotient's method without the
+/// denominator, so the boundary test needs no product (x − m is a sum of doubles). False only
+/// for an overflowed expansion or a double beyond 2^±1000.
 template <class F>
 bool round_exact_value(const expansion& x, double& out) {
-  return round_exact_quotient<F>(x, expansion(1.0), out);
+  if (x.overflowed()) return false;
+  if (x.is_zero()) {
+    out = 0;
+    return true;
+  }
+  const bounded_pair a = approximate(x);
+  double y, r;
+  two_sum(a.hi, a.lo, y, r);
+  // The sign of x − m for a boundary m = m_hi + m_lo, exactly.
+  auto side = [&](double m_hi, double m_lo) {
+    expansion d = x;
+    d.add(-m_hi);
+    d.add(-m_lo);
+    return d.overflowed() ? 2 : d.sign();
+  };
+  if constexpr (std::is_same_v<F, float>) {
+    if (round_interval_to_float(y, (std::fabs(r) + a.e) * inflate, out)) return true;
+    const double reach = (std::fabs(r) + a.e) * 2 * inflate + 3 * unit_roundoff * std::fabs(y);
+    const float lo = static_cast<float>(y - reach), hi = static_cast<float>(y + reach);
+    if (!(lo < hi) || std::nextafter(lo, hi) != hi) return false;
+    double m;
+    if (std::isinf(hi)) m = 0x1.ffffffp127;
+    else if (std::isinf(lo)) m = -0x1.ffffffp127;
+    else m = (static_cast<double>(lo) + static_cast<double>(hi)) / 2;
+    const int s = side(m, 0);
+    if (s == 2) return false;
+    float pick;
+    if (s > 0) pick = hi;
+    else if (s < 0) pick = lo;
+    else if (std::isinf(hi) || std::isinf(lo)) pick = std::isinf(hi) ? hi : lo;
+    else pick = exact_detail::even_float(lo) ? lo : hi;
+    out = pick == 0 ? 0.0 : static_cast<double>(pick);
+    return true;
+  } else {
+    if (round_pair_to_double(y, r, a.e, out)) return true;
+    const double magnitude = std::fabs(y);
+    if (!(magnitude > 0x1p-1000 && magnitude < 0x1p1000)) return false;  // half gaps are doubles
+    const double up = std::nextafter(y, HUGE_VAL), down = std::nextafter(y, -HUGE_VAL);
+    const double half_up = (up - y) / 2, half_down = (y - down) / 2;  // exact
+    if (!(a.e * inflate * 4 < half_up && a.e * inflate * 4 < half_down)) return false;
+    const bool towards_up = r + a.e * inflate >= half_up;
+    const double low = towards_up ? y : down, high = towards_up ? up : y;
+    const int s = side(y, towards_up ? half_up : -half_down);
+    if (s == 2) return false;
+    double pick;
+    if (s > 0) pick = high;
+    else if (s < 0) pick = low;
+    else pick = exact_detail::even_double(low) ? low : high;
+    out = pick == 0 ? 0.0 : pick;
+    return true;
+  }
 }
 
 }  // namespace SHADOWPROOF_KERNEL_TARGET

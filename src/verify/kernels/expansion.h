@@ -92,6 +92,8 @@ class expansion {
   }
   /// a · b for two inputs (the same as a * b; the filter numbers have a cheaper exact form).
   friend expansion exact_product(const expansion& a, const expansion& b) { return a * b; }
+  /// An output that is the product of two inputs: here the exact product.
+  friend expansion rounded_product(const expansion& a, const expansion& b) { return a * b; }
   /// a · c for c = 0 or ±2^k (small k): exact.
   friend expansion scaled_by(const expansion& a, double c) {
     if (c == 0) return expansion();

@@ -50,6 +50,10 @@ struct fraction_layout {
   zero_denominator on_zero[4] = {};
 };
 
+/// In Form::denominator_of: the entry is an input or a small integer, exactly a value of both
+/// output types, so it is its own correct rounding (no test needed).
+constexpr signed char exact_entry = -2;
+
 /// A layout with the form's denominators (Form::denominator_of, a constant array so that the
 /// filter over lanes picks each entry's rounding at compile time), nothing else set.
 template <class Form>
@@ -98,7 +102,8 @@ auto kernel_inputs(const R* x) {
 template <class Form, int J, class N, class D, class R, class Mask>
 void round_entry(const N* num, const D* prepared_den, R* values, Mask& ok) {
   constexpr int d = Form::denominator_of[J];
-  if constexpr (d < 0) ok = ok & round_value(num[J], values[J]);
+  if constexpr (d == exact_entry) values[J] = select(first_of(num[J]) == R(0.0), R(0.0), first_of(num[J]));
+  else if constexpr (d < 0) ok = ok & round_value(num[J], values[J]);
   else ok = ok & round_quotient(num[J], prepared_den[d], values[J]);
 }
 template <class Form, class N, class D, class R, class Mask, int... J>

@@ -21,7 +21,8 @@ struct frustum_form {
   static auto undefined_case(const R* x, const conventions&) {
     return (x[4] <= R(0.0)) | (x[5] <= R(0.0));
   }
-  static constexpr signed char denominator_of[16] = {0, -1, 0, -1, -1, 1, 1, -1, -1, -1, 2, 2, -1, -1, -1, -1};
+  static constexpr signed char E = exact_entry;  // zeros, ±1 and inputs
+  static constexpr signed char denominator_of[16] = {0, E, 0, E, E, 1, 1, E, E, E, 2, 2, E, E, E, E};
   static fraction_layout layout(const conventions& conv) {
     fraction_layout l = layout_of<frustum_form>();
     flat_row_layout(l, 0, 2, conv);

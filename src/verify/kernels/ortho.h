@@ -18,7 +18,8 @@ struct ortho_form {
   static void canonical_inputs(R*, const conventions&) {}
   template <class R>
   static auto undefined_case(const R* x, const conventions&) { return no_lanes(x[0]); }
-  static constexpr signed char denominator_of[16] = {0, -1, -1, 0, -1, 1, -1, 1, -1, -1, 2, 2, -1, -1, -1, -1};
+  static constexpr signed char E = exact_entry;  // zeros, ±1 and inputs
+  static constexpr signed char denominator_of[16] = {0, E, E, 0, E, 1, E, 1, E, E, 2, 2, E, E, E, E};
   static fraction_layout layout(const conventions& conv) {
     fraction_layout l = layout_of<ortho_form>();
     for (int k = 0; k < 3; ++k) flat_row_layout(l, k, 3, conv);

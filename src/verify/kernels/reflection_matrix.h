@@ -35,7 +35,8 @@ struct reflection_matrix_form {
   }
   template <class R>
   static auto undefined_case(const R* x, const conventions&) { return no_lanes(x[0]); }
-  static constexpr signed char denominator_of[16] = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, -1, -1, -1, -1};
+  static constexpr signed char E = exact_entry;  // zeros, ±1 and inputs
+  static constexpr signed char denominator_of[16] = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, E, E, E, E};
   static fraction_layout layout(const conventions&) {
     fraction_layout l = layout_of<reflection_matrix_form>();
     l.on_zero[0] = zero_denominator::impossible;  // a zero normal names no mirror

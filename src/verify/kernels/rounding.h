@@ -21,10 +21,11 @@ inline namespace SHADOWPROOF_KERNEL_TARGET {
 /// The float nearest to every point of [y − E, y + E] (E ≥ 0, an already inflated bound), if
 /// they share one. Round-to-nearest is monotone, so equal roundings of both ends decide every
 /// point between; `reach` pushes the ends out past the rounding of their own computation
-/// (|fl(y ± reach) − (y ± reach)| ≤ u (|y| + reach) + 2^-1075 ≤ reach − E).
+/// (|fl(y ± reach) − (y ± reach)| ≤ u (|y| + reach) + 2^-1075 ≤ reach − E). A reach of
+/// underflow_slack still rounds both ends of a zero value to ±0 (floats stop at 2^-149).
 template <class R>
 inline auto round_interval_to_float(R y, R E, R& out) {
-  const R reach = (E + R(3 * unit_roundoff) * magnitude(y)) * R(inflate) + R(0x1p-1060);
+  const R reach = (E + R(3 * unit_roundoff) * magnitude(y)) * R(inflate) + R(underflow_slack);
   const R a = round_to_float_value(y - reach), b = round_to_float_value(y + reach);
   out = select(a == R(0.0), R(0.0), a);
   return a == b;
@@ -142,6 +143,37 @@ inline auto round_quotient_to_double(const basic_bounded_pair<R>& num, const bas
   const auto zero = (num.hi == R(0.0)) & (num.e == R(0.0));  // lo = 0 when hi = 0
   out = select(zero, R(0.0), rounded);
   return den.usable() & (zero | decided);
+}
+
+/// The sum of n exact doubles t[0..n) (overwritten) correctly rounded to double, when a bound
+/// decides it. Two sweeps of TwoSum along the terms (Ogita, Rump and Oishi's VecSum) keep their
+/// sum exactly and leave in the last term the recursive sum, in the others its errors, which
+/// after the second sweep are of the order u² Σ|t|; then hi + lo = TwoSum(last, fl(Σ others)),
+/// within γ_{n−2} Σ|others| (recursive summation, Higham §4.2) of the exact sum. Sums that
+/// cancel to a few ulps of their terms, like a plane value of a point on the plane, are
+/// decided with about 2^-100 relative accuracy.
+template <int n, class R>
+inline auto round_sum_to_double(R* t, R& out) {
+  SHADOWPROOF_UNROLL
+  for (int sweep = 0; sweep < 2; ++sweep) {
+    SHADOWPROOF_UNROLL
+    for (int i = 1; i < n; ++i) {
+      R s, e;
+      two_sum(t[i], t[i - 1], s, e);
+      t[i] = s;
+      t[i - 1] = e;
+    }
+  }
+  R rest = t[0], mass = magnitude(t[0]);
+  SHADOWPROOF_UNROLL
+  for (int i = 1; i < n - 1; ++i) {
+    rest = rest + t[i];
+    mass = mass + magnitude(t[i]);
+  }
+  R hi, lo;
+  two_sum(t[n - 1], rest, hi, lo);
+  const R E = mass * R((n - 1) * unit_roundoff * inflate);  // sums are exact near underflow
+  return round_pair_to_double(hi, lo, E, out);
 }
 
 // ===========================================================================================

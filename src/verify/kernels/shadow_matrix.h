@@ -1,7 +1,8 @@
 #pragma once
-// shadow-matrix kernels: M = (P·L) I − L Pᵀ. An off-diagonal entry is one product −L_r P_c;
-// the diagonal entry r is P·L − L_r P_r = Σ_{j≠r} P_j L_j exactly (the same exact value, one
-// term fewer). No denominators: every entry is a short sum of exact products.
+// shadow-matrix kernels: M = (P·L) I − L Pᵀ. An off-diagonal entry is one product −L_r P_c,
+// whose correct rounding is the IEEE product itself; the diagonal entry r is
+// P·L − L_r P_r = Σ_{j≠r} P_j L_j exactly (the same exact value, one term fewer). No
+// denominators: every entry is a short sum of exact products.
 #include "fraction_form.h"
 
 namespace shadowproof::detail {
@@ -35,7 +36,7 @@ struct shadow_matrix_form {
     SHADOWPROOF_UNROLL
     for (int r = 0; r < 4; ++r) {
       SHADOWPROOF_UNROLL
-      for (int c = 0; c < 4; ++c) num[r * 4 + c] = -exact_product(L[r], P[c]);
+      for (int c = 0; c < 4; ++c) num[r * 4 + c] = -rounded_product(L[r], P[c]);  // an output by itself
       num[r * 5] = products[(r + 1) % 4] + products[(r + 2) % 4] + products[(r + 3) % 4];  // the diagonal
     }
   }

@@ -119,8 +119,14 @@ bool shadow_point_kernel(const double* in, const conventions& conv, fast_referen
 
 // Where G lies on the line through the light and V (see image_class), over N: 1 decided,
 // 0 undecided, −1 generic oracle. x = P[4], canonical L[4], V[3]; G finite, of the case's type.
-template <class N>
+// Products of two of those values are exact_product when `exact_products` (f32 values in double,
+// or pairs), ordinary bounded products otherwise (a first, cheaper filter for f64).
+template <class N, bool exact_products>
 int image_class_stage(const double* x, const double* G, image_class& result) {
+  auto product = [](const N& a, const N& b) {
+    if constexpr (exact_products) return exact_product(a, b);
+    else return a * b;
+  };
   const double* L = x + 4;
   const double* V = x + 8;
   const bool same = G[0] == V[0] && G[1] == V[1] && G[2] == V[2];
@@ -140,8 +146,8 @@ int image_class_stage(const double* x, const double* G, image_class& result) {
   // and b = Σ (w V_i − L_i)² (division-free: compare a with 0 and with b).
   N a(0.0), b(0.0);
   for (int i = 0; i < 3; ++i) {
-    const N dv = exact_product(N(w), N(V[i])) - N(L[i]);
-    a = a + (exact_product(N(w), N(G[i])) - N(L[i])) * dv;
+    const N dv = product(N(w), N(V[i])) - N(L[i]);
+    a = a + (product(N(w), N(G[i])) - N(L[i])) * dv;
     b = b + dv * dv;
   }
   const int sb = sign_of(b), sa = sign_of(a);
@@ -174,19 +180,31 @@ bool image_class_kernel(const double* in, const conventions& conv, const double*
   copy_inputs(in + 8, 3, x + 8);
   // The products w G_i must be exact (f32) or exact pairs (f64) like those of the inputs.
   if (!kernel_inputs<F, 4, 11>(x) || !kernel_inputs<F, 4, 3>(got)) return false;  // a: w² G V, degree 4
-  const int filtered = kernels_exact_only ? 0 : image_class_stage<filter_number<F>>(x, got, out);
-  if (filtered != 0) return filtered > 0;
-  return image_class_stage<expansion>(x, got, out) > 0;
+  if (!kernels_exact_only) {
+    // f64: plain double with bounds first (regular images lie far from V and the light), then
+    // double-double.
+    if constexpr (std::is_same_v<F, double>)
+      if (image_class_stage<bounded, false>(x, got, out) == 1) return true;
+    if (image_class_stage<filter_number<F>, true>(x, got, out) == 1) return true;
+  }
+  return image_class_stage<expansion, true>(x, got, out) > 0;
 }
 
-// P·(G, 1) = Σ P_i G_i + P_3, exact products of two values of the case's type.
+// P·(G, 1) = Σ P_i G_i + P_3, from exact products of two values of the case's type: four
+// exact doubles for f32, seven for f64 (two per product), summed by round_sum_to_double; the
+// exact expansion where that does not decide.
 template <class F>
 bool plane_value_kernel(const double* in, const double* got, double& out) {
   if (!kernel_inputs<F, 2, 4>(in) || !kernel_inputs<F, 2, 3>(got)) return false;
-  // Rounded to double, so the f64 filter (double-double) serves both types.
-  bounded_pair v(in[3]);
-  for (int i = 0; i < 3; ++i) v = v + exact_product(bounded_pair(in[i]), bounded_pair(got[i]));
-  if (!kernels_exact_only && round_to_double(v, out)) return true;
+  if constexpr (std::is_same_v<F, float>) {  // products of floats are exact doubles
+    double terms[4] = {in[0] * got[0], in[1] * got[1], in[2] * got[2], in[3]};
+    if (!kernels_exact_only && round_sum_to_double<4>(terms, out)) return true;
+  } else {
+    double terms[7];
+    for (int i = 0; i < 3; ++i) two_product(in[i], got[i], terms[2 * i], terms[2 * i + 1]);
+    terms[6] = in[3];
+    if (!kernels_exact_only && round_sum_to_double<7>(terms, out)) return true;
+  }
   expansion x(in[3]);
   for (int i = 0; i < 3; ++i) x.add_product(in[i], got[i]);
   return round_exact_value<double>(x, out);
