@@ -84,11 +84,18 @@ std::vector<const CLI::App*> subcommands_of(const CLI::App& app) {
   return subs;
 }
 
+std::string help_of(const CLI::App& app) {
+  // App::help() would print the help of the subcommand being run (help itself): format directly.
+  const std::string path = path_of(app);
+  return app.get_formatter()->make_help(&app, "shadowproof" + (path.empty() ? "" : " " + path),
+                                        CLI::AppFormatMode::Normal);
+}
+
 std::string help_all(const CLI::App& root) {
-  std::string text = root.help();
+  std::string text = help_of(root);
   std::vector<const CLI::App*> all;
   collect(root, all);
-  for (const CLI::App* a : all) text += "\n" + std::string(70, '=') + "\n" + a->help();
+  for (const CLI::App* a : all) text += "\n" + std::string(70, '=') + "\n" + help_of(*a);
   return text;
 }
 

@@ -12,6 +12,9 @@ namespace shadowproof::cli {
 /// The subcommands of `app` (option groups excluded), sorted by name.
 std::vector<const CLI::App*> subcommands_of(const CLI::App& app);
 
+/// The help of one command, its usage line naming the whole path ("shadowproof explain shadow").
+std::string help_of(const CLI::App& app);
+
 /// The help of `root` followed by the help of every command and subcommand below it.
 std::string help_all(const CLI::App& root);
 

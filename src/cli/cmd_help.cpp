@@ -1,5 +1,6 @@
 // shadowproof help: the help of any command, of all of them, the man page and the bash
 // completion script, all generated from the command-line definitions.
+#include <algorithm>
 #include <iostream>
 #include <memory>
 
@@ -43,7 +44,7 @@ int run_help(const help_options& o, const CLI::App& root) {
     }
     app = *it;
   }
-  std::cout << app->help();
+  std::cout << help_of(*app);
   return 0;
 }
 

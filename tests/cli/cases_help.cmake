@@ -5,10 +5,13 @@ shadowproof_cli_case(NAME "--version prints the project version"
   ARGS --version EXPECT_CODE 0 STDOUT_REGEX "^shadowproof ${PROJECT_VERSION}\n$")
 shadowproof_cli_case(NAME "help of a nested command lists its options"
   ARGS help explain shadow EXPECT_CODE 0
-  STDOUT_REGEX "explain shadow.*--plane TEXT REQUIRED.*--light TEXT REQUIRED.*--point")
+  STDOUT_REGEX "^derive the shadow matrix.*Usage: shadowproof explain shadow \\[OPTIONS\\].*--plane TEXT REQUIRED.*--light TEXT REQUIRED.*--point")
+shadowproof_cli_case(NAME "help alone is the overview of every command"
+  ARGS help EXPECT_CODE 0
+  STDOUT_REGEX "Usage: shadowproof \\[OPTIONS\\] SUBCOMMAND.*--version.*Subcommands:.*explain.*shadow")
 shadowproof_cli_case(NAME "help --all covers every command"
   ARGS help --all EXPECT_CODE 0
-  STDOUT_REGEX "Subcommands:.*shadowproof shadow.*--plane.*shadowproof project.*--convention.*shadowproof help.*--bash-completion")
+  STDOUT_REGEX "Subcommands:.*Usage: shadowproof explain shadow.*--plane.*Usage: shadowproof help.*--bash-completion.*Usage: shadowproof project.*--convention")
 shadowproof_cli_case(NAME "help of an unknown command names the commands there are"
   ARGS help explain shade EXPECT_CODE 2 STDOUT_EMPTY
   STDERR_REGEX "^shadowproof: \\[shadowproof\\.cli\\.unknown_command\\] no command 'shadowproof explain shade' \\(one of: normal-matrix, perspective, reflect, shadow\\)\n$")
