@@ -116,10 +116,10 @@ TEST_CASE("column-major storage matches when declared, and entries are named by 
 }
 
 TEST_CASE("a shadow point left where it is fails as an image on the wrong side", "[testing]") {
-  // 1 − 0x1.555556p-2 is 0x3f800000 − 0x3eaaaaab = 13981013 float steps, 2 − 0 is 0x40000000,
-  // 3 − 0x1.155556p+2 is 0x408aaaab − 0x40400000 = 4893355.
   // V = (1, 2, 3): M V = (5 − 4, 0, −2 + 15, −2 + 5) = (1, 0, 13, 3), so the shadow is
-  // (1/3, 0, 13/3), a real shadow (0 < P·V / P·L = 2/5 < 1).
+  // (1/3, 0, 13/3), a real shadow (0 < P·V / P·L = 2/5 < 1). Leaving V in place is off by
+  // 0x3f800000 − 0x3eaaaaab = 13981013 float steps in x (1 against 0x1.555556p-2), 0x40000000
+  // in y (2 against 0) and 0x408aaaab − 0x40400000 = 4893355 in z (3 against 0x1.155556p+2).
   const float V[3] = {1, 2, 3};
   const float right[3] = {1.0f / 3.0f, 0, 13.0f / 3.0f};  // each correctly rounded (one division)
   CHECK_THAT(right, rounds_to(shadow_point_of(ground, lamp, V)));
