@@ -460,10 +460,10 @@ TEST_CASE("the filtered oracle agrees exactly with the all-rational oracle", "[v
   CHECK(counters.decided_by_intervals > 4 * counters.fell_back_to_rationals);
 }
 
-TEST_CASE("the dedicated float kernels agree exactly with the all-rational oracle", "[verify][oracle]") {
-  // Shadow matrix, shadow of a point and reflection matrix on float inputs take dedicated
-  // kernels in the filtered oracle; every class, several conventions, and outputs that are the
-  // float formula's result, one ulp off it, or (for points) the point itself and the light.
+namespace {
+
+// Conventions the dedicated kernels read, per operation, for the grade-level agreement tests.
+std::vector<conventions> kernel_conventions(operation op) {
   conventions along_rays;
   along_rays.light = light_sign::along_rays;
   conventions column_major;
@@ -471,65 +471,75 @@ TEST_CASE("the dedicated float kernels agree exactly with the all-rational oracl
   conventions clamped;
   clamped.clamps_behind_receiver = true;
   clamped.directional_only = true;
-  oracle_counters counters;
+  switch (op) {
+    case operation::shadow_matrix: return {conventions{}, along_rays, column_major};
+    case operation::shadow_point: return {conventions{}, along_rays, clamped};
+    case operation::ortho:
+    case operation::frustum:
+    case operation::perspective: {
+      std::vector<conventions> all;
+      for (depth_convention d : {depth_convention::gl, depth_convention::d3d, depth_convention::reverse_z}) {
+        conventions c = column_major;
+        c.depth = d;
+        c.symmetric_view = d == depth_convention::d3d && op != operation::perspective;
+        all.push_back(c);
+      }
+      return all;
+    }
+    default: return {conventions{}, column_major};
+  }
+}
+
+// Grades float outputs (the formula's own, one ulp off, or for points the point itself and the
+// light) with the filtered oracle, which takes the operation's dedicated kernels, and with the
+// all-rational one; every class, the conventions above.
+template <class T>
+std::size_t check_kernel_grades(std::uint64_t seed, std::size_t per_class, oracle_counters& counters) {
+  const scalar_type type = std::is_same_v<T, float> ? scalar_type::f32 : scalar_type::f64;
   std::size_t graded = 0;
-  for (operation op : {operation::shadow_matrix, operation::shadow_point, operation::reflection_matrix})
-    for (const conventions conv : {conventions{}, along_rays, column_major, clamped}) {
-      if (conv.clamps_behind_receiver && op != operation::shadow_point) continue;
+  for (operation op : all_operations())
+    for (const conventions& conv : kernel_conventions(op))
       for (input_class cls : {input_class::regular, input_class::near_degenerate, input_class::degenerate}) {
-        const auto cases = generate_cases(op, scalar_type::f32, 400, 77 + static_cast<int>(op), cls, conv);
-        std::mt19937_64 rng(11);
+        const auto cases = generate_cases(op, type, per_class, seed + static_cast<int>(op), cls, conv);
+        std::mt19937_64 rng(seed);
         for (const auto& c : cases) {
-          std::vector<double> out = float_outputs<float>(c);
+          std::vector<double> out = float_outputs<T>(c);
           const std::uint64_t pick = rng() % 6;
           if (pick == 0)
             for (double& x : out)
-              if (std::isfinite(x)) x = std::nextafter(static_cast<float>(x), -1e30f);
+              if (std::isfinite(x)) x = static_cast<T>(std::nextafter(static_cast<T>(x), T(-1e30)));
           if (op == operation::shadow_point && pick == 1) out.assign(c.inputs.begin() + 8, c.inputs.end());
           if (op == operation::shadow_point && pick == 2 && c.inputs[7] != 0)
-            for (std::size_t i = 0; i < 3; ++i) out[i] = static_cast<float>(c.inputs[4 + i] / c.inputs[7]);
+            for (std::size_t i = 0; i < 3; ++i) out[i] = static_cast<T>(c.inputs[4 + i] / c.inputs[7]);
           const case_grade fast = grade_case(c, conv, out.data(), oracle_mode::filtered, &counters);
           const case_grade slow = grade_case(c, conv, out.data(), oracle_mode::naive);
-          INFO("op " << to_string(op) << ", class " << to_string(cls) << ", case " << case_json_line(c));
+          INFO("op " << to_string(op) << ", class " << to_string(cls) << ", depth " << to_string(conv.depth)
+                     << ", case " << case_json_line(c));
           require_same(fast, slow);
           ++graded;
         }
       }
-    }
-  CHECK(graded == (3 * 3 + 1) * 3 * 400);
+  return graded;
+}
+
+std::size_t kernel_convention_count() {
+  std::size_t n = 0;
+  for (operation op : all_operations()) n += kernel_conventions(op).size();
+  return n;
+}
+
+}  // namespace
+
+TEST_CASE("the dedicated float kernels agree exactly with the all-rational oracle", "[verify][oracle]") {
+  oracle_counters counters;
+  const std::size_t graded = check_kernel_grades<float>(77, 200, counters);
+  CHECK(graded == kernel_convention_count() * 3 * 200);
   CHECK(counters.decided_by_intervals > 9 * counters.fell_back_to_rationals);
 }
 
 TEST_CASE("the double kernels agree exactly with the all-rational oracle", "[verify][oracle]") {
-  // Shadow matrix, shadow of a point and reflection on double inputs; outputs as in the float test.
-  conventions column_major;
-  column_major.storage = storage_order::column_major;
-  conventions clamped;
-  clamped.clamps_behind_receiver = true;
-  clamped.directional_only = true;
   oracle_counters counters;
-  std::size_t graded = 0;
-  for (operation op : {operation::shadow_matrix, operation::shadow_point, operation::reflection_matrix})
-    for (const conventions conv : {conventions{}, column_major, clamped}) {
-      if (conv.clamps_behind_receiver && op != operation::shadow_point) continue;
-      for (input_class cls : {input_class::regular, input_class::near_degenerate, input_class::degenerate}) {
-        const auto cases = generate_cases(op, scalar_type::f64, 400, 91 + static_cast<int>(op), cls, conv);
-        std::mt19937_64 rng(13);
-        for (const auto& c : cases) {
-          std::vector<double> out = float_outputs<double>(c);
-          const std::uint64_t pick = rng() % 4;
-          if (pick == 0)
-            for (double& x : out)
-              if (std::isfinite(x)) x = std::nextafter(x, -1e300);
-          if (op == operation::shadow_point && pick == 1) out.assign(c.inputs.begin() + 8, c.inputs.end());
-          const case_grade fast = grade_case(c, conv, out.data(), oracle_mode::filtered, &counters);
-          const case_grade slow = grade_case(c, conv, out.data(), oracle_mode::naive);
-          INFO("op " << to_string(op) << ", class " << to_string(cls) << ", case " << case_json_line(c));
-          require_same(fast, slow);
-          ++graded;
-        }
-      }
-    }
-  CHECK(graded == (2 + 3 + 2) * 3 * 400);
-  CHECK(counters.decided_by_intervals > 4 * counters.fell_back_to_rationals);
+  const std::size_t graded = check_kernel_grades<double>(91, 200, counters);
+  CHECK(graded == kernel_convention_count() * 3 * 200);
+  CHECK(counters.decided_by_intervals > 9 * counters.fell_back_to_rationals);
 }
