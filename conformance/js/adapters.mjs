@@ -8,12 +8,13 @@
 //
 //   node adapters.mjs list                       the adapters as JSON lines
 //   node adapters.mjs run NAME cases.jsonl       outputs as JSON lines on stdout
+//   node adapters.mjs batch jobs.json            [{"name", "cases", "outputs"}, ...] in one process
 //
 // Each adapter declares the operation, the float type, and the conventions the case file
 // must be written in (`shadowproof cases --convention ...`, and `grade` reads them back from
 // the lines). conformance/run.sh drives them all.
 import { createRequire } from "node:module";
-import { readFileSync } from "node:fs";
+import { readFileSync, writeFileSync } from "node:fs";
 
 const require = createRequire(import.meta.url);
 const here = new URL(".", import.meta.url);
@@ -171,7 +172,7 @@ for (const [depth, system, reversed] of threeDepths) {
     ({ camera: [fovy, aspect, n, far] }) => {
       const camera = new THREE.PerspectiveCamera(fovy, aspect, n, far);
       camera.coordinateSystem = system;
-      camera.reversedDepth = reversed;
+      camera._reversedDepth = reversed;  // what a renderer with a reversed depth buffer sets (getter only)
       camera.updateProjectionMatrix();
       return camera.projectionMatrix.elements;
     });
@@ -260,7 +261,7 @@ function jsonNumber(x) {
   return x;
 }
 
-async function run(name, path) {
+async function outputLines(name, path) {
   const adapter = adapters.find((a) => a.name === name);
   if (!adapter) throw new Error(`no adapter named ${name} (node adapters.mjs list)`);
   const call = await adapter.make();
@@ -273,7 +274,7 @@ async function run(name, path) {
     const output = result === null ? new Array(count).fill(null) : Array.from(result, jsonNumber);
     lines.push(JSON.stringify({ id: c.id, output }));
   }
-  process.stdout.write(lines.join("\n") + "\n");
+  return lines.join("\n") + "\n";
 }
 
 const [command, name, path] = process.argv.slice(2);
@@ -283,8 +284,11 @@ if (command === "list") {
     process.stdout.write(JSON.stringify(rest) + "\n");
   }
 } else if (command === "run" && name && path) {
-  await run(name, path);
+  process.stdout.write(await outputLines(name, path));
+} else if (command === "batch" && name) {
+  // One process for many adapters: a JSON array of {"name", "cases", "outputs"} file paths.
+  for (const job of JSON.parse(readFileSync(name, "utf8"))) writeFileSync(job.outputs, await outputLines(job.name, job.cases));
 } else {
-  process.stderr.write("usage: node adapters.mjs list | run NAME cases.jsonl\n");
+  process.stderr.write("usage: node adapters.mjs list | run NAME cases.jsonl | batch jobs.json\n");
   process.exit(2);
 }
