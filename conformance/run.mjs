@@ -12,7 +12,7 @@
 // grade). --sample grades a few cases of every adapter and fails when any adapter cannot be
 // run or graded (what CI runs); the full run writes the table.
 import { execFileSync, spawnSync } from "node:child_process";
-import { mkdtempSync, writeFileSync, readFileSync, rmSync } from "node:fs";
+import { existsSync, mkdtempSync, writeFileSync, rmSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join, dirname } from "node:path";
 import { fileURLToPath } from "node:url";
@@ -32,6 +32,12 @@ const out = option("--out", sample ? null : join(here, "..", "docs", "conformanc
 if (!shadowproof) {
   process.stderr.write("usage: node run.mjs --shadowproof PATH [--vk-build DIR] [--cases N] [--seed S] [--out FILE] [--sample]\n");
   process.exit(2);
+}
+// Under ctest: skipped (exit 77), and said so, when conformance/setup.sh has not run.
+if (args.includes("--skip-when-not-set-up") &&
+    (!existsSync(join(here, "js", "node_modules", "three")) || !vkBuild || !existsSync(join(vkBuild, "shadowproof_vk_runner")))) {
+  process.stderr.write("conformance sample skipped: run conformance/setup.sh first (npm ci, the Vulkan runner)\n");
+  process.exit(77);
 }
 const work = mkdtempSync(join(tmpdir(), "shadowproof-conformance-"));
 
