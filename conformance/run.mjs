@@ -185,7 +185,9 @@ if (vkBuild) {
     const outputsPath = join(work, `${s.file}.outputs.jsonl`);
     writeCases(casesPath, s.op, "f32", [], s.extra);
     writeFileSync(outputsPath, run(runner, [join(vkBuild, s.file), "--inputs", String(s.inputs), "--outputs", String(s.outputs), casesPath]));
-    addRow({ kind: "shader", library: `${s.lang.toUpperCase()} on ${driver}`, version: compilers[s.lang], function: s.source,
+    const mesa = (driver.match(/Mesa [0-9.]+/) ?? [driver])[0];
+    addRow({ kind: "shader", library: `${s.lang.toUpperCase()} shader on lavapipe`, version: `${mesa}, ${compilers[s.lang]}`,
+             function: s.source,
              op: s.op, type: "f32", conventions: s.extra.includes("--directional") ? "directional lights" : "" },
            gradeFile(casesPath, outputsPath));
   }
@@ -230,6 +232,18 @@ lines.push("2^20 ulps, a non-finite value or garbage on ordinary inputs: a defec
 lines.push("*undefined outputs* column counts how the adapter answers where the exact value does not exist");
 lines.push("(flat view volumes, singular matrices, parallel lights): a finite number there is *garbage*.");
 lines.push("The reproducer prints the exact answer for the worst case's inputs.");
+lines.push("");
+// The headline: adapters per library and verdict.
+const verdictOrder = ["correctly rounded", "within a few ulps", "within more ulps", "unstable near degeneracies", "wrong on regular inputs"];
+const bucket = (v) => (v.startsWith("within") ? (Number(v.split(" ")[1]) <= SHARP ? verdictOrder[1] : verdictOrder[2]) : v);
+lines.push(`| library | adapters | ${verdictOrder.join(" | ")} |`);
+lines.push(`| --- | --- | ${verdictOrder.map(() => "---").join(" | ")} |`);
+for (const lib of [...new Set(rows.map((r) => r.library))]) {
+  const mine = rows.filter((r) => r.library === lib);
+  lines.push(`| ${esc(lib)} | ${mine.length} | ` + verdictOrder.map((v) => mine.filter((r) => bucket(r.verdict) === v).length || "").join(" | ") + " |");
+}
+lines.push("");
+lines.push(`(*within a few ulps*: at most ${SHARP}.)`);
 lines.push("");
 lines.push("| library | version | function | operation | type | conventions | verdict | max ulps | non-finite / garbage | worst case | reproducer |");
 lines.push("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |");

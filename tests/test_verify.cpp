@@ -380,6 +380,27 @@ TEST_CASE("look-at and target-to: square roots rounded as IEEE sqrt rounds them,
   CHECK(grade_case(collapsed, conventions{}, identity.data()).garbage == 12);
 }
 
+TEST_CASE("width and height builders: the symmetric volume, a zero width undefines only the x scale",
+          "[verify][camera]") {
+  // w = 4, h = 2, n = 1, f = 3 (gl): ortho 2/w = 1/2, 2/h = 1, A = −2/(f−n) = −1, B = −(f+n)/(f−n) = −2;
+  // perspective 2n/w = 1/2, 2n/h = 1, A = −(f+n)/(f−n) = −2, B = −2fn/(f−n) = −3 (by hand).
+  const test_case o = make_case(operation::ortho_size, scalar_type::f32, {4, 2, 1, 3});
+  const std::vector<double> ortho{0.5, 0, 0, 0, 0, 1, 0, 0, 0, 0, -1, -2, 0, 0, 0, 1};
+  CHECK(grade_case(o, conventions{}, ortho.data()).max_ulps == 0);
+  const test_case p = make_case(operation::perspective_size, scalar_type::f64, {4, 2, 1, 3});
+  const std::vector<double> persp{0.5, 0, 0, 0, 0, 1, 0, 0, 0, 0, -2, -3, 0, 0, -1, 0};
+  CHECK(grade_case(p, conventions{}, persp.data()).max_ulps == 0);
+  // w = 0: only (0,0) divides by it; the centre offset (0,3) is 0 by construction.
+  const test_case flat = make_case(operation::ortho_size, scalar_type::f32, {0, 2, 1, 3});
+  std::vector<double> inf_scale = ortho;
+  inf_scale[0] = std::numeric_limits<double>::infinity();
+  const case_grade g = grade_case(flat, conventions{}, inf_scale.data());
+  CHECK(g.garbage == 0);
+  CHECK(g.nonfinite == 0);
+  CHECK_FALSE(g.outputs[0].exact_defined);
+  CHECK(g.outputs[3].exact_defined);
+}
+
 TEST_CASE("grading an irrational operation up to scale is refused", "[verify][camera]") {
   conventions homogeneous;
   homogeneous.homogeneous = true;
@@ -605,6 +626,18 @@ std::vector<double> float_outputs(const test_case& c) {
       }
       break;
     }
+    case operation::ortho_size:
+    case operation::perspective_size:
+      try {
+        const T hw = v(0) / T(2), hh = v(1) / T(2);
+        const mat4<T> M = c.op == operation::ortho_size
+                              ? orthographic<T>(-hw, hw, -hh, hh, v(2), v(3), depth_convention::gl)
+                              : frustum<T>(-hw, hw, -hh, hh, v(2), v(3), depth_convention::gl);
+        for (std::size_t i = 0; i < 16; ++i) out.push_back(M(i / 4, i % 4));
+      } catch (const error&) {
+        out.assign(16, nan);
+      }
+      break;
     case operation::look_at:
     case operation::target_to: {
       const vec3<T> eye{v(0), v(1), v(2)}, target{v(3), v(4), v(5)}, up{v(6), v(7), v(8)};

@@ -219,14 +219,14 @@ for (const [hand, H] of [["left", "LH"], ["right", "RH"]])
       return ({ box: [l, r, b, top, n, far] }) => babylonOut(B.Matrix[`OrthoOffCenter${H}`](l, r, b, top, n, far, half));
     });
     if (H === "LH") {
-      // Width and height builders: the symmetric box's width is r − l = 2r, exactly.
-      add("babylon", "Matrix.OrthoLH", "ortho", ["f32", "f64"], conv([COLUMN, hs, `depth=${depth}`, "symmetric=true"], suffix), async (t) => {
+      // The width and height builders.
+      add("babylon", "Matrix.OrthoLH", "ortho-size", ["f32", "f64"], conv([COLUMN, hs, `depth=${depth}`], suffix), async (t) => {
         const B = await babylon(t);
-        return ({ box: [l, r, b, top, n, far] }) => babylonOut(B.Matrix.OrthoLH(r - l, top - b, n, far, half));
+        return ({ size: [w, h, n, far] }) => babylonOut(B.Matrix.OrthoLH(w, h, n, far, half));
       });
-      add("babylon", "Matrix.PerspectiveLH", "frustum", ["f32", "f64"], conv([COLUMN, hs, `depth=${depth}`, "symmetric=true"], suffix), async (t) => {
+      add("babylon", "Matrix.PerspectiveLH", "perspective-size", ["f32", "f64"], conv([COLUMN, hs, `depth=${depth}`], suffix), async (t) => {
         const B = await babylon(t);
-        return ({ box: [l, r, b, top, n, far] }) => babylonOut(B.Matrix.PerspectiveLH(r - l, top - b, n, far, half));
+        return ({ size: [w, h, n, far] }) => babylonOut(B.Matrix.PerspectiveLH(w, h, n, far, half));
       });
     }
   }
