@@ -82,13 +82,14 @@ function undefinedHandling(byClass) {
   return parts.join(", ") || "-";
 }
 
-// The worst case over all classes: its output, got, expected, ulps and reproducer.
+// The worst case over all classes: the largest finite error when there is one (non-finite and
+// garbage answers have their own column), else the first non-finite or garbage case.
 function worstCase(byClass) {
   let worst = null;
   for (const s of Object.values(byClass)) {
     if (!s || typeof s !== "object" || !Array.isArray(s.worst)) continue;
     for (const w of s.worst) {
-      const score = (w.nonfinite || w.garbage) ? Infinity : (w.ulps ?? 0);
+      const score = w.nonfinite || w.garbage ? -1 : (w.bits ?? 0);
       if (!worst || score > worst.score) worst = { ...w, score };
     }
   }

@@ -50,6 +50,27 @@ void camera(const double* in, double* out) {
   out[15] = 1;
 }
 
+// The width and height builders (D3DXMatrixOrthoRH / D3DXMatrixPerspectiveRH with OpenGL's
+// depth range): 2/w, 2/h (orthographic) or 2n/w, 2n/h (perspective), and the depth row.
+template <class T, bool perspective>
+void view_size(const double* in, double* out) {
+  const inputs_as<T, 4> x(in);
+  const T w = x[0], h = x[1], n = x[2], f = x[3];
+  mat4<T> m;
+  m(0, 0) = (perspective ? T(2) * n : T(2)) / w;
+  m(1, 1) = (perspective ? T(2) * n : T(2)) / h;
+  if (perspective) {
+    m(2, 2) = -(f + n) / (f - n);
+    m(2, 3) = -(T(2) * f * n) / (f - n);
+    m(3, 2) = T(-1);
+  } else {
+    m(2, 2) = T(-2) / (f - n);
+    m(2, 3) = -(f + n) / (f - n);
+    m(3, 3) = T(1);
+  }
+  for (std::size_t i = 0; i < 16; ++i) out[i] = static_cast<double>(m(i / 4, i % 4));
+}
+
 }  // namespace
 
 void add_reference_camera(std::vector<implementation>& out) {
@@ -64,6 +85,12 @@ void add_reference_camera(std::vector<implementation>& out) {
                  "textbook lookAt: normalize(eye − target), normalize(up × z), z × x, float", camera<float, false>});
   out.push_back({"textbook-look-at-f64", operation::look_at, scalar_type::f64, c,
                  "textbook lookAt: normalize(eye − target), normalize(up × z), z × x, double", camera<double, false>});
+  out.push_back({"textbook-ortho-size-f32", operation::ortho_size, scalar_type::f32, c,
+                 "textbook orthographic from width and height: 2/w, 2/h, −2/(f−n), −(f+n)/(f−n), float",
+                 view_size<float, false>});
+  out.push_back({"textbook-perspective-size-f32", operation::perspective_size, scalar_type::f32, c,
+                 "textbook perspective from width and height at the near plane: 2n/w, 2n/h, float",
+                 view_size<float, true>});
   out.push_back({"textbook-target-to-f32", operation::target_to, scalar_type::f32, c,
                  "textbook camera placement: the lookAt rotation transposed, the eye, float", camera<float, true>});
 }

@@ -36,6 +36,19 @@ shadowproof_cli_case(NAME "project: an unknown handedness is rejected"
   EXPECT_CODE 2 STDOUT_EMPTY
   STDERR_REGEX "\\[shadowproof.project.handedness\\] unknown handedness 'up': expected right or left")
 
+# --- check on the camera operations ------------------------------------------------------------
+if(TARGET shadowproof_impls)
+  shadowproof_cli_case(NAME "check grades every camera operation, one row per class"
+    ARGS check --impl all --op perspective-fov --cases 9
+    EXPECT_CODE 0
+    STDOUT_REGEX "textbook-perspective-fov-f32 +perspective-fov +regular +3 .*near-degenerate +3 .*degenerate +3 ")
+  foreach(op perspective-fov-infinite look-at target-to ortho-size perspective-size)
+    shadowproof_cli_case(NAME "check runs the ${op} implementations"
+      ARGS check --impl all --op ${op} --cases 6 EXPECT_CODE 0
+      STDOUT_REGEX " ${op} *regular +2 ")
+  endforeach()
+endif()
+
 # --- conventions in case lines ------------------------------------------------------------------
 shadowproof_cli_case(NAME "cases --convention writes the conventions and the inputs in them"
   ARGS cases --op shadow-matrix --type f32 --count 1 --convention plane=n.x=d --convention layout=column-major
