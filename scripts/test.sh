@@ -6,6 +6,9 @@ set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${1:-$root/build/asan-ubsan}"
 "$root/scripts/setup.sh"
+# The conformance table's adapters (npm ci of the pinned libraries, the Vulkan runner): ctest
+# runs a sample of every one (label conformance).
+"$root/conformance/setup.sh" "$root/build/conformance-vk"
 (cd "$root" && cmake --preset asan-ubsan -B "$build")
 cmake --build "$build" -j"$(nproc)"
 # A sanitizer report fails the test that triggered it.
