@@ -1,5 +1,6 @@
 // The any-language protocol: writing and reading case lines, reading output lines.
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <sstream>
 
@@ -72,8 +73,14 @@ test_case parse_case_line(std::string_view line, std::size_t line_number) {
   c.type = *type;
   if (j.contains("class")) {
     const auto cls = j["class"].is_string() ? input_class_from_string(j["class"].get<std::string>()) : std::nullopt;
-    if (!cls) fail("\"class\" must be regular, near-degenerate or degenerate");
+    if (!cls) fail("\"class\" must be regular, near-degenerate, degenerate or range");
     c.cls = *cls;
+  }
+  if (j.contains("closeness")) {
+    const auto& k = j["closeness"];
+    if (k.is_number()) c.closeness = k.get<double>();
+    else if (k.is_string() && k.get<std::string>() == "-inf") c.closeness = -std::numeric_limits<double>::infinity();
+    else fail("\"closeness\" must be a number or \"-inf\"");
   }
   for (const auto& g : signature(c.op).inputs) {
     if (!j.contains(g.name) || !j[g.name].is_array() || j[g.name].size() != g.size)
@@ -150,6 +157,13 @@ std::string case_json_line(const test_case& c) {
   std::ostringstream out;
   out << "{\"id\": " << c.id << ", \"op\": \"" << to_string(c.op) << "\", \"type\": \""
       << to_string(c.type) << "\", \"class\": \"" << to_string(c.cls) << "\"";
+  if (std::isinf(c.closeness) && c.closeness < 0) {
+    out << ", \"closeness\": \"-inf\"";
+  } else if (std::isfinite(c.closeness)) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.2f", c.closeness);
+    out << ", \"closeness\": " << text;
+  }
   const auto& sig = signature(c.op);
   // Each input group twice: bit-exact hex floats, then (under "exact") exact decimals.
   auto write_groups = [&](bool exact) {

@@ -12,14 +12,16 @@
 namespace shadowproof {
 
 /// Writes the case as the JSON object of the case-file protocol (one line, no newline):
-/// {"id": 0, "op": "shadow-matrix", "type": "f32", "class": "regular", "plane": [hex...],
-///  "light": [hex...], "exact": {"plane": [decimal...], ...}}.
+/// {"id": 0, "op": "shadow-matrix", "type": "f32", "class": "regular", "closeness": -1.25,
+///  "plane": [hex...], "light": [hex...], "exact": {"plane": [decimal...], ...}}; closeness is
+/// log2 of the relative distance to the degeneracy (two decimals, "-inf" exactly on it).
 std::string case_json_line(const test_case& c);
 
 /// Exact decimal expansion of a finite double ("0.100000001490116119384765625").
 std::string exact_decimal(double x);
 
-/// Reads one line of a case file (case_json_line's format; "class" and "exact" optional).
+/// Reads one line of a case file (case_json_line's format; "class", "closeness" and "exact"
+/// optional).
 /// Every input must be a hex-float or exact string (or a JSON number) exactly representable
 /// in the case's type. Throws error "protocol.case" naming the line and field otherwise, and
 /// for a plane with a zero normal or an all-zero light.

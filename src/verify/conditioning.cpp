@@ -1,0 +1,345 @@
+// Verdicts from the exact partial derivatives, and the conditioning report of a case.
+//
+// For an output with exact value f (times the scale λ when graded up to scale) and output g:
+//   D = Σ_j |∂f/∂x_j| |x_j|       what the inputs contribute to f: perturbing every input by a
+//                                  relative ε moves f by at most ε D (to first order);
+//   η = |g − f| / (|f| + D)        the mixed backward error: g = f(x + Δx) + Δf with
+//                                  |Δx_j| ≤ η |x_j| and |Δf| ≤ η |f| (to first order).
+// Forward error ≤ condition × backward error: |g − f| / |f| ≤ η (1 + κ) with κ = D / |f|.
+#include "conditioning.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <type_traits>
+
+#include "dual.h"
+#include "operation_table.h"
+#include "scale.h"
+#include "shadowproof/core/error.h"
+
+namespace shadowproof {
+namespace detail {
+namespace {
+
+template <class F>
+constexpr double unit() {
+  return std::numeric_limits<F>::epsilon() / 2;
+}
+
+template <class B>
+exact_outputs<dual<B>> derivatives(const operation_spec& spec, const test_case& c, const conventions& conv,
+                                   derivative_context& context) {
+  const derivative_scope scope(context);
+  if constexpr (std::is_same_v<B, rational>) return spec.derivatives_rational(c.inputs.data(), conv);
+  else if constexpr (std::is_same_v<B, ival32>) return spec.derivatives_ival32(c.inputs.data(), conv);
+  else return spec.derivatives_ival64(c.inputs.data(), conv);
+}
+
+template <class F>
+derivative_context context_for(const operation_spec& spec, const test_case& c) {
+  derivative_context context;
+  context.inputs = c.inputs.data();
+  context.count = std::min(c.inputs.size(), max_derivative_inputs);
+  context.singular_threshold = spec.stable_constant * unit<F>();
+  context.max_finite = static_cast<double>(std::numeric_limits<F>::max());
+  context.min_normal = static_cast<double>(std::numeric_limits<F>::min());
+  return context;
+}
+
+// A note or a comparison that must be decided: undecided throws, and the caller redoes the case
+// with rationals.
+bool certain(noted fact) {
+  if (fact == noted::undecided) throw undecided{};
+  return fact == noted::yes;
+}
+
+// The exact values f and sizes D of the outputs, in the implementation's layout and scale.
+template <class B>
+struct scaled_outputs {
+  std::array<B, 16> value;
+  std::array<B, 16> sensitivity;
+  std::array<bool, 16> defined;
+  std::array<noted, 16> near_singular;
+  std::array<noted, 16> out_of_range;
+  std::size_t count = 0;
+};
+
+template <class B, class F>
+scaled_outputs<B> scale_outputs(const operation_spec& spec, const test_case& c, const conventions& conv,
+                                const double* got, const exact_outputs<dual<B>>& e) {
+  scaled_outputs<B> s;
+  const std::size_t n = spec.signature.output_count, k = spec.signature.matrix_size;
+  s.count = n;
+  for (std::size_t j = 0; j < n; ++j) {
+    const std::size_t i = canonical_index(j, k, conv);
+    s.defined[j] = e.defined && (e.entry_undefined.empty() || !e.entry_undefined[i]);
+    s.value[j] = e.values[i].value();
+    s.near_singular[j] = e.values[i].near_singular();
+    s.out_of_range[j] = e.values[i].out_of_range();
+    B size(0);
+    for (std::size_t q = 0; q < e.values[i].lanes() && q < c.inputs.size(); ++q)
+      size += magnitude_of(e.values[i].derivative(q)) * magnitude_of(base_from(c.inputs[q], static_cast<const B*>(nullptr)));
+    s.sensitivity[j] = size;
+  }
+  if (graded_up_to_scale(spec, conv) && e.defined) {
+    std::size_t pivot = 0;
+    if (const auto lambda = choose_scale<B, F>(s.value, s.defined, n, got, pivot)) {
+      const B size = magnitude_of(*lambda);
+      for (std::size_t j = 0; j < n; ++j) {
+        s.value[j] = *lambda * s.value[j];
+        s.sensitivity[j] = size * s.sensitivity[j];
+      }
+    }
+  }
+  return s;
+}
+
+// f outside the normal range of F: beyond the largest finite value, or nonzero below the
+// smallest normal one.
+template <class B, class F>
+bool value_out_of_range(const B& f) {
+  const B size = magnitude_of(f);
+  const B top = base_from(static_cast<double>(std::numeric_limits<F>::max()), static_cast<const B*>(nullptr));
+  if (certain(exceeds(size, top))) return true;
+  int s = 0;
+  if (!decided_sign_of(f, s)) throw undecided{};
+  if (s == 0) return false;
+  const B bottom = base_from(static_cast<double>(std::numeric_limits<F>::min()), static_cast<const B*>(nullptr));
+  return certain(exceeds(bottom, size));
+}
+
+// x² beyond the largest finite value of F (high) or below its smallest normal value (low),
+// decided from the exponent and exactly near the boundary.
+template <class F>
+bool square_leaves_range(double x, bool high) {
+  const int e = std::ilogb(x);  // |x| ∈ [2^e, 2^(e+1)), x² ∈ [2^2e, 2^(2e+2))
+  const int top = std::numeric_limits<F>::max_exponent;  // max < 2^top, max ≥ 2^(top−1)
+  const int bottom = std::numeric_limits<F>::min_exponent - 1;  // smallest normal 2^bottom
+  if (high ? 2 * e >= top : 2 * e + 2 <= bottom) return true;
+  if (high ? 2 * e + 2 <= top - 1 : 2 * e >= bottom) return false;
+  const rational square = exact_value(x) * exact_value(x);
+  return high ? square > exact_value(static_cast<double>(std::numeric_limits<F>::max()))
+              : square < exact_value(static_cast<double>(std::numeric_limits<F>::min()));
+}
+
+// Some product of two inputs (a square included) leaves the normal range of F: any evaluation
+// that multiplies them, or normalises a vector of them, over- or underflows.
+template <class F>
+bool inputs_out_of_range(const test_case& c) {
+  double top = 0, bottom = std::numeric_limits<double>::infinity();
+  for (double x : c.inputs)
+    if (x != 0) {
+      top = std::max(top, std::fabs(x));
+      bottom = std::min(bottom, std::fabs(x));
+    }
+  return top != 0 && (square_leaves_range<F>(top, true) || square_leaves_range<F>(bottom, false));
+}
+
+template <class B, class F, class RangeLimited>
+verdict decide(pending_kind kind, double got, const B& f, const B& sensitivity, noted near_singular,
+               const RangeLimited& case_out_of_range, int stable_constant, double tau) {
+  const auto from = [](double x) { return base_from(x, static_cast<const B*>(nullptr)); };
+  const auto out_of_range = [&] { return case_out_of_range() || value_out_of_range<B, F>(f); };
+  if (kind != pending_kind::finite) {
+    if (certain(near_singular)) return verdict::stable;
+    if (out_of_range()) return verdict::range;
+    return kind == pending_kind::nonfinite ? verdict::nonfinite : verdict::wrong;
+  }
+  const B error = magnitude_of(B(from(got) - f));
+  const B scale = magnitude_of(f) + sensitivity;
+  if (!certain(exceeds(error, B(from(stable_constant * unit<F>()) * scale)))) return verdict::stable;
+  if (out_of_range()) return verdict::range;
+  if (!certain(exceeds(error, B(from(tau) * scale)))) return verdict::unstable;
+  return verdict::wrong;
+}
+
+template <class B, class F>
+void decide_with(case_grade& g, const test_case& c, const conventions& conv, const double* got,
+                 const pending_outputs& pending) {
+  const operation_spec& spec = spec_of(c.op);
+  derivative_context context = context_for<F>(spec, c);
+  const exact_outputs<dual<B>> e = derivatives<B>(spec, c, conv, context);
+  const scaled_outputs<B> s = scale_outputs<B, F>(spec, c, conv, got, e);
+  const double tau = wrong_threshold(c.type);
+  // The range: anything the evaluation met, or a product of two inputs; decided lazily, only an
+  // output that is not stable asks.
+  std::optional<bool> case_out_of_range;
+  const auto range_limited = [&] {
+    if (!case_out_of_range) case_out_of_range = inputs_out_of_range<F>(c) || certain(context.out_of_range);
+    return *case_out_of_range;
+  };
+  std::array<verdict, 16> decided{};
+  for (std::size_t t = 0; t < pending.count; ++t) {
+    const std::size_t j = pending.index[t];
+    if (!s.defined[j]) throw internal_error("an output whose exact value does not exist waits for its derivatives");
+    decided[t] = decide<B, F>(pending.kind[t], got[j], s.value[j], s.sensitivity[j], s.near_singular[j],
+                              range_limited, spec.stable_constant, tau);
+  }
+  // Only now, when every verdict is decided: an undecided interval leaves g untouched.
+  for (std::size_t t = 0; t < pending.count; ++t) g.outputs[pending.index[t]].v = decided[t];
+}
+
+template <class F, class I>
+void decide_filtered(case_grade& g, const test_case& c, const conventions& conv, const double* got,
+                     const pending_outputs& pending, oracle_mode mode) {
+  if (mode == oracle_mode::filtered) {
+    try {
+      decide_with<I, F>(g, c, conv, got, pending);
+      return;
+    } catch (const undecided&) {
+    }
+  }
+  decide_with<rational, F>(g, c, conv, got, pending);
+}
+
+double to_double(const rational& q) { return to_nearest_double(q); }
+
+template <class B, class F>
+bool leaves_range_with(const test_case& c, const conventions& conv) {
+  if (inputs_out_of_range<F>(c)) return true;
+  const operation_spec& spec = spec_of(c.op);
+  derivative_context context = context_for<F>(spec, c);
+  const exact_outputs<dual<B>> e = derivatives<B>(spec, c, conv, context);
+  if (certain(context.out_of_range)) return true;
+  if (!e.defined) return false;
+  bool undecided_somewhere = false;
+  for (std::size_t i = 0; i < spec.signature.output_count; ++i) {
+    if (!e.entry_undefined.empty() && e.entry_undefined[i]) continue;
+    try {
+      if (value_out_of_range<B, F>(e.values[i].value())) return true;
+    } catch (const undecided&) {
+      undecided_somewhere = true;
+    }
+  }
+  if (undecided_somewhere) throw undecided{};
+  return false;
+}
+
+template <class F, class I>
+bool leaves_range_filtered(const test_case& c, const conventions& conv) {
+  try {
+    return leaves_range_with<I, F>(c, conv);
+  } catch (const undecided&) {
+    return leaves_range_with<rational, F>(c, conv);
+  }
+}
+
+}  // namespace
+
+bool leaves_range(const test_case& c, const conventions& conv) {
+  return c.type == scalar_type::f32 ? leaves_range_filtered<float, ival32>(c, conv)
+                                    : leaves_range_filtered<double, ival64>(c, conv);
+}
+
+double unit_roundoff(scalar_type type) { return type == scalar_type::f32 ? unit<float>() : unit<double>(); }
+
+double wrong_threshold(scalar_type type) { return type == scalar_type::f32 ? std::ldexp(1.0, -12) : std::ldexp(1.0, -27); }
+
+void decide_pending(case_grade& g, const test_case& c, const conventions& conv, const double* got,
+                    const pending_outputs& pending, oracle_mode mode) {
+  if (pending.count == 0) return;
+  const operation_spec& spec = spec_of(c.op);
+  if (!spec.derivatives_rational || c.inputs.size() > max_derivative_inputs)
+    throw internal_error("operation " + std::string(spec.name) + " has no derivatives for its verdicts");
+  if (c.type == scalar_type::f32) decide_filtered<float, ival32>(g, c, conv, got, pending, mode);
+  else decide_filtered<double, ival64>(g, c, conv, got, pending, mode);
+}
+
+bool certainly_stable(double got, double ref, scalar_type type, int c) {
+  // With h half the larger gap next to ref: |g − f| ≤ |g − ref| + h and |f| ≥ |ref| − h. The
+  // difference is exact, or rounded by 2^-64 relative (long double); the margins cover that.
+  const long double a = std::fabs(static_cast<long double>(ref));
+  long double gap;
+  if (type == scalar_type::f32) {
+    const float r = std::fabs(static_cast<float>(ref));
+    gap = static_cast<long double>(std::nextafter(r, std::numeric_limits<float>::infinity())) - r;
+  } else {
+    const double r = std::fabs(ref);
+    gap = static_cast<long double>(std::nextafter(r, std::numeric_limits<double>::infinity())) - r;
+  }
+  if (!std::isfinite(gap)) return false;
+  const long double h = gap / 2;
+  const long double error = (std::fabs(static_cast<long double>(got) - static_cast<long double>(ref)) + h) * (1 + 0x1p-40L);
+  const long double bound = static_cast<long double>(c) * unit_roundoff(type) * (a - h) * (1 - 0x1p-40L);
+  return error <= bound;
+}
+
+}  // namespace detail
+
+case_conditioning conditioning(const test_case& c, const conventions& conv, const double* outputs) {
+  using namespace detail;
+  const operation_spec& spec = spec_of(c.op);
+  case_conditioning r;
+  r.unit_roundoff = unit_roundoff(c.type);
+  r.stable_constant = spec.stable_constant;
+  if (!spec.derivatives_rational || c.inputs.size() > max_derivative_inputs) return r;
+  derivative_context context =
+      c.type == scalar_type::f32 ? context_for<float>(spec, c) : context_for<double>(spec, c);
+  const exact_outputs<dual<rational>> e = derivatives<rational>(spec, c, conv, context);
+  r.out_of_range = context.out_of_range == noted::yes ||
+                   (c.type == scalar_type::f32 ? inputs_out_of_range<float>(c) : inputs_out_of_range<double>(c));
+  const scaled_outputs<rational> s = c.type == scalar_type::f32
+                                         ? scale_outputs<rational, float>(spec, c, conv, outputs, e)
+                                         : scale_outputs<rational, double>(spec, c, conv, outputs, e);
+  const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
+  rational max_value(0), max_sensitivity(0), max_error(0);
+  bool all_finite = true, any_defined = false;
+  for (std::size_t j = 0; j < s.count; ++j) {
+    output_conditioning o;
+    o.defined = s.defined[j];
+    if (o.defined) {
+      r.near_singular = r.near_singular || s.near_singular[j] == noted::yes;
+      any_defined = true;
+      const rational& f = s.value[j];
+      const rational& d = s.sensitivity[j];
+      const rational size = abs(f);
+      o.value = to_double(f);
+      o.sensitivity = to_double(d);
+      o.condition = sgn(d) == 0 ? 0.0 : (sgn(f) == 0 ? inf : to_double(rational(d / size)));
+      if (std::isfinite(outputs[j])) {
+        const rational error = abs(rational(exact_value(outputs[j]) - f));
+        o.relative_error = sgn(error) == 0 ? 0.0 : (sgn(f) == 0 ? inf : to_double(rational(error / size)));
+        const rational scale = size + d;
+        o.backward_error = sgn(error) == 0 ? 0.0
+                           : sgn(scale) == 0 ? inf
+                                             : to_double(rational(error / scale / exact_value(r.unit_roundoff)));
+        if (error > max_error) max_error = error;
+      } else {
+        o.relative_error = o.backward_error = nan;
+        all_finite = false;
+      }
+      if (size > max_value) max_value = size;
+      if (d > max_sensitivity) max_sensitivity = d;
+    }
+    r.outputs.push_back(o);
+  }
+  if (any_defined) {
+    r.normwise_condition = sgn(max_sensitivity) == 0 ? 0.0
+                           : sgn(max_value) == 0 ? inf
+                                                 : to_double(rational(max_sensitivity / max_value));
+    if (!all_finite) {
+      r.normwise_error = r.normwise_backward_error = r.normwise_ulps = nan;
+    } else {
+      r.normwise_error = sgn(max_error) == 0 ? 0.0 : (sgn(max_value) == 0 ? inf : to_double(rational(max_error / max_value)));
+      const rational scale = max_value + max_sensitivity;
+      r.normwise_backward_error =
+          sgn(max_error) == 0 ? 0.0 : (sgn(scale) == 0 ? inf : to_double(rational(max_error / scale / exact_value(r.unit_roundoff))));
+      // ulps of the largest entry: its spacing in the type (the subnormal spacing near 0).
+      const double top = c.type == scalar_type::f32 ? static_cast<double>(to_nearest_float(max_value))
+                                                    : to_nearest_double(max_value);
+      double spacing;
+      if (c.type == scalar_type::f32) {
+        const float t = static_cast<float>(top);
+        spacing = std::isfinite(t) ? static_cast<double>(std::nextafter(t, std::numeric_limits<float>::infinity())) - top : inf;
+      } else {
+        spacing = std::isfinite(top) ? std::nextafter(top, inf) - top : inf;
+      }
+      r.normwise_ulps = std::isfinite(spacing) ? to_double(rational(max_error / exact_value(spacing))) : nan;
+    }
+  }
+  return r;
+}
+
+}  // namespace shadowproof
