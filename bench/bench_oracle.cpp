@@ -6,8 +6,9 @@
 // instead grades that many regular and that many near-degenerate cases per implementation with
 // both oracles and reports any difference (exit 1), the check the unit test runs on a sample.
 //   bench/bench_oracle --ratio=ROUNDS [--impl=NAME]
-// prints the README's table: cases per second of the float code, the filtered and the naive
-// oracle, alternating them ROUNDS times on the same cases and keeping each one's best round.
+// prints the README's table: cases per second of the float code, the filtered oracle without and
+// with verdicts (what the verdicts cost) and the naive oracle, alternating them ROUNDS times on
+// the same cases and keeping each one's best round.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -121,8 +122,11 @@ bool same_grade(const case_grade& a, const case_grade& b) {
         x.ulps != y.ulps || x.nonfinite != y.nonfinite || x.garbage != y.garbage)
       return false;
   }
+  for (std::size_t i = 0; i < a.outputs.size(); ++i)
+    if (a.outputs[i].v != b.outputs[i].v) return false;
   return a.max_ulps == b.max_ulps && a.exact_class == b.exact_class && a.got_class == b.got_class &&
-         a.misclassified == b.misclassified && a.plane_value == b.plane_value && a.scale_pivot == b.scale_pivot;
+         a.misclassified == b.misclassified && a.plane_value == b.plane_value && a.scale_pivot == b.scale_pivot &&
+         a.v == b.v && a.scale == b.scale;
 }
 
 int agree(std::size_t count, const std::string& only) {
@@ -162,14 +166,16 @@ double thread_seconds() {
   return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
-// Rounds alternate the float code, the filtered oracle and the naive oracle on the same 2000
-// cases, so that a change of load on a shared machine hits all three alike; each one's best
-// round (least thread time per case) is kept.
+// Rounds alternate the float code, the filtered oracle with and without verdicts and the naive
+// oracle on the same 2000 cases, so that a change of load on a shared machine hits all of them
+// alike; each one's best round (least thread time per case) is kept.
 int ratio(std::size_t rounds, const std::string& only) {
   const std::vector<std::string> names{"seed000-general-f32", "eigen-intersection-f32", "reflect-divide-f32",
-                                       "seed000-general-f64", "eigen-intersection-f64", "reflect-divide-f64"};
-  std::printf("| implementation / class | float code itself | filtered oracle | all-rational oracle "
-              "| filtered ÷ rational | float code ÷ filtered |\n| --- | --- | --- | --- | --- | --- |\n");
+                                       "seed000-general-f64", "eigen-intersection-f64", "reflect-divide-f64",
+                                       "glm-frustum-f32",     "glm-inverse-transpose-f64"};
+  std::printf("| implementation / class | float code itself | filtered oracle, values only | filtered oracle "
+              "with verdicts | verdicts cost | all-rational oracle | filtered ÷ rational | cases > 1 ulp |\n"
+              "| --- | --- | --- | --- | --- | --- | --- | --- |\n");
   for (const auto& name : names) {
     if (!only.empty() && name != only) continue;
     bool present = false;
@@ -179,8 +185,11 @@ int ratio(std::size_t rounds, const std::string& only) {
       const fixture& f = make_fixture(name, cls);
       std::vector<double> out(signature(f.impl->op).output_count);
       const double n = static_cast<double>(f.cases.size());
-      double best_float = 1e300, best_filtered = 1e300, best_naive = 1e300;
+      double best_float = 1e300, best_values = 1e300, best_verdicts = 1e300, best_naive = 1e300;
       std::uint64_t sink = 0;
+      std::size_t beyond_ulp = 0;
+      for (std::size_t i = 0; i < f.cases.size(); ++i)
+        beyond_ulp += grade_case(f.cases[i], f.impl->conv, f.outputs[i].data()).v > verdict::faithful;
       for (std::size_t r = 0; r < rounds; ++r) {
         double t0 = thread_seconds();
         for (int k = 0; k < 100; ++k)
@@ -189,11 +198,15 @@ int ratio(std::size_t rounds, const std::string& only) {
             benchmark::DoNotOptimize(out.data());
           }
         best_float = std::min(best_float, (thread_seconds() - t0) / (100 * n));
-        t0 = thread_seconds();
-        for (int k = 0; k < 5; ++k)
-          for (std::size_t i = 0; i < f.cases.size(); ++i)
-            sink += grade_case(f.cases[i], f.impl->conv, f.outputs[i].data(), oracle_mode::filtered).max_ulps;
-        best_filtered = std::min(best_filtered, (thread_seconds() - t0) / (5 * n));
+        for (grade_depth depth : {grade_depth::values_only, grade_depth::verdicts}) {
+          t0 = thread_seconds();
+          for (int k = 0; k < 5; ++k)
+            for (std::size_t i = 0; i < f.cases.size(); ++i)
+              sink += grade_case(f.cases[i], f.impl->conv, f.outputs[i].data(), oracle_mode::filtered, nullptr, depth)
+                          .max_ulps;
+          double& best = depth == grade_depth::values_only ? best_values : best_verdicts;
+          best = std::min(best, (thread_seconds() - t0) / (5 * n));
+        }
         t0 = thread_seconds();
         for (std::size_t i = 0; i < f.cases.size(); ++i)
           sink += grade_case(f.cases[i], f.impl->conv, f.outputs[i].data(), oracle_mode::naive).max_ulps;
@@ -207,9 +220,10 @@ int ratio(std::size_t rounds, const std::string& only) {
         else std::snprintf(text, sizeof text, "%.3g k/s", per_second / 1e3);
         return std::string(text);
       };
-      std::printf("| %s / %s | %s | %s | %s | %.1f× | %.1f× |\n", name.c_str(), std::string(to_string(cls)).c_str(),
-                  rate(best_float).c_str(), rate(best_filtered).c_str(), rate(best_naive).c_str(),
-                  best_naive / best_filtered, best_filtered / best_float);
+      std::printf("| %s / %s | %s | %s | %s | %.2f× | %s | %.1f× | %.0f%% |\n", name.c_str(),
+                  std::string(to_string(cls)).c_str(), rate(best_float).c_str(), rate(best_values).c_str(),
+                  rate(best_verdicts).c_str(), best_verdicts / best_values, rate(best_naive).c_str(),
+                  best_naive / best_verdicts, 100.0 * static_cast<double>(beyond_ulp) / n);
       std::fflush(stdout);
     }
   }

@@ -17,6 +17,7 @@
 #include "dual.h"
 #include "operation_table.h"
 #include "scale.h"
+#include "sensitivity.h"
 #include "shadowproof/core/error.h"
 
 namespace shadowproof {
@@ -226,6 +227,96 @@ bool leaves_range_filtered(const test_case& c, const conventions& conv) {
   }
 }
 
+// Half the larger gap next to ref in the type: the exact value lies within it of ref.
+long double half_gap(double ref, scalar_type type) {
+  if (type == scalar_type::f32) {
+    const float r = std::fabs(static_cast<float>(ref));
+    return (static_cast<long double>(std::nextafter(r, std::numeric_limits<float>::infinity())) - r) / 2;
+  }
+  const double r = std::fabs(ref);
+  return (static_cast<long double>(std::nextafter(r, std::numeric_limits<double>::infinity())) - r) / 2;
+}
+
+// A long double bound as W, rounded outwards.
+template <class W>
+W outward(long double x, bool up) {
+  W y = static_cast<W>(x);
+  if (up ? static_cast<long double>(y) < x : static_cast<long double>(y) > x)
+    y = std::nextafter(y, up ? std::numeric_limits<W>::infinity() : -std::numeric_limits<W>::infinity());
+  return y;
+}
+
+// The verdict of a pending output from a kernel's bounds D ∈ [d_lo, d_hi] and the exact value f
+// within the kernel's enclosure (or within half a gap of its correct rounding ref); nothing when
+// the bounds cannot decide it. W is double for float cases (every quantity is a float or a
+// double bound), long double for double ones.
+template <class W, class InRange>
+std::optional<verdict> decide_from_bounds(pending_kind kind, double got, double ref, std::size_t index,
+                                          const sensitivity_bounds& b, scalar_type type, int stable_constant,
+                                          const InRange& in_range) {
+  if (kind != pending_kind::finite) {
+    if (b.near_singular == noted::yes) return verdict::stable;
+    if (b.near_singular == noted::undecided || !in_range()) return std::nullopt;
+    return kind == pending_kind::nonfinite ? verdict::nonfinite : verdict::wrong;
+  }
+  if (!std::isfinite(ref)) return std::nullopt;
+  constexpr W down = 1 - W(0x1p-50), up = 1 + W(0x1p-50);
+  const W d_lo = b.lo[index], d_hi = b.hi[index];
+  W f_lo, f_hi;
+  if (b.values) {
+    f_lo = outward<W>(b.f_lo[index], false);
+    f_hi = outward<W>(b.f_hi[index], true);
+  } else {
+    const W h = static_cast<W>(half_gap(ref, type));
+    f_lo = static_cast<W>(ref) - h;
+    f_hi = static_cast<W>(ref) + h;
+  }
+  const W g = got;
+  const W error_lo = g < f_lo ? (f_lo - g) * down : (g > f_hi ? (g - f_hi) * down : W(0));
+  const W error_hi = std::max(std::fabs(g - f_lo), std::fabs(g - f_hi)) * up;
+  const W size_lo = f_lo > 0 ? f_lo * down : (f_hi < 0 ? -f_hi * down : W(0));
+  const W size_hi = std::max(std::fabs(f_lo), std::fabs(f_hi)) * up;
+  const W stable = stable_constant * static_cast<W>(unit_roundoff(type));
+  const W tau = static_cast<W>(wrong_threshold(type));
+  if (!std::isfinite(error_hi) || !std::isfinite(size_hi) || !std::isfinite(d_hi)) return std::nullopt;
+  if (error_hi <= stable * (size_lo + d_lo) * down) return verdict::stable;
+  if (!(error_lo > stable * (size_hi + d_hi) * up) || !in_range()) return std::nullopt;
+  if (error_hi <= tau * (size_lo + d_lo) * down) return verdict::unstable;
+  if (error_lo > tau * (size_hi + d_hi) * up) return verdict::wrong;
+  return std::nullopt;
+}
+
+// The kernel's verdicts for every pending output, or false (g untouched) when it cannot give
+// them all.
+bool decide_with_kernel(case_grade& g, const test_case& c, const conventions& conv, const double* got,
+                        const pending_outputs& pending, const double* reference, std::optional<point_class> cls) {
+  const operation_spec& spec = spec_of(c.op);
+  if (!spec.sensitivity || graded_up_to_scale(spec, conv)) return false;
+  const std::size_t k = spec.signature.matrix_size;
+  sensitivity_query q{&c, &conv, reference, cls, {}, spec.stable_constant};
+  for (std::size_t t = 0; t < pending.count; ++t) q.wanted.set(canonical_index(pending.index[t], k, conv));
+  sensitivity_bounds b;
+  if (!spec.sensitivity(q, b)) return false;
+  std::array<verdict, 16> decided{};
+  std::optional<bool> range_checked;  // asked only for outputs that are not stable
+  const auto ranged = [&] {
+    if (!range_checked) range_checked = in_range(q, spec.signature.output_count, b);
+    return *range_checked;
+  };
+  for (std::size_t t = 0; t < pending.count; ++t) {
+    const std::size_t j = pending.index[t], i = canonical_index(j, k, conv);
+    const auto v = c.type == scalar_type::f32
+                       ? decide_from_bounds<double>(pending.kind[t], got[j], reference[i], i, b, c.type,
+                                                    spec.stable_constant, ranged)
+                       : decide_from_bounds<long double>(pending.kind[t], got[j], reference[i], i, b, c.type,
+                                                         spec.stable_constant, ranged);
+    if (!v) return false;
+    decided[t] = *v;
+  }
+  for (std::size_t t = 0; t < pending.count; ++t) g.outputs[pending.index[t]].v = decided[t];
+  return true;
+}
+
 }  // namespace
 
 bool leaves_range(const test_case& c, const conventions& conv) {
@@ -238,8 +329,10 @@ double unit_roundoff(scalar_type type) { return type == scalar_type::f32 ? unit<
 double wrong_threshold(scalar_type type) { return type == scalar_type::f32 ? std::ldexp(1.0, -12) : std::ldexp(1.0, -27); }
 
 void decide_pending(case_grade& g, const test_case& c, const conventions& conv, const double* got,
-                    const pending_outputs& pending, oracle_mode mode) {
+                    const pending_outputs& pending, oracle_mode mode, const double* reference,
+                    std::optional<point_class> cls) {
   if (pending.count == 0) return;
+  if (mode == oracle_mode::filtered && decide_with_kernel(g, c, conv, got, pending, reference, cls)) return;
   const operation_spec& spec = spec_of(c.op);
   if (!spec.derivatives_rational || c.inputs.size() > max_derivative_inputs)
     throw internal_error("operation " + std::string(spec.name) + " has no derivatives for its verdicts");
@@ -248,22 +341,21 @@ void decide_pending(case_grade& g, const test_case& c, const conventions& conv, 
 }
 
 bool certainly_stable(double got, double ref, scalar_type type, int c) {
-  // With h half the larger gap next to ref: |g − f| ≤ |g − ref| + h and |f| ≥ |ref| − h. The
-  // difference is exact, or rounded by 2^-64 relative (long double); the margins cover that.
-  const long double a = std::fabs(static_cast<long double>(ref));
-  long double gap;
+  // With h half the larger gap next to ref: |g − f| ≤ |g − ref| + h and |f| ≥ |ref| − h. For float
+  // outputs the double difference is exact or within 2^-53 relative, for double ones the long
+  // double difference within 2^-64; the margins cover that.
   if (type == scalar_type::f32) {
     const float r = std::fabs(static_cast<float>(ref));
-    gap = static_cast<long double>(std::nextafter(r, std::numeric_limits<float>::infinity())) - r;
-  } else {
-    const double r = std::fabs(ref);
-    gap = static_cast<long double>(std::nextafter(r, std::numeric_limits<double>::infinity())) - r;
+    const double h = (static_cast<double>(std::nextafter(r, std::numeric_limits<float>::infinity())) - r) / 2;
+    const double error = (std::fabs(got - ref) + h) * (1 + 0x1p-40);
+    return std::isfinite(h) && error <= c * 0x1p-24 * (static_cast<double>(r) - h) * (1 - 0x1p-40);
   }
+  const double r = std::fabs(ref);
+  const long double gap = static_cast<long double>(std::nextafter(r, std::numeric_limits<double>::infinity())) - r;
   if (!std::isfinite(gap)) return false;
   const long double h = gap / 2;
   const long double error = (std::fabs(static_cast<long double>(got) - static_cast<long double>(ref)) + h) * (1 + 0x1p-40L);
-  const long double bound = static_cast<long double>(c) * unit_roundoff(type) * (a - h) * (1 - 0x1p-40L);
-  return error <= bound;
+  return error <= static_cast<long double>(c) * 0x1p-53L * (r - h) * (1 - 0x1p-40L);
 }
 
 }  // namespace detail

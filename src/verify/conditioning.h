@@ -6,7 +6,9 @@
 // and, when an interval cannot decide a comparison, over rationals, so that both oracle modes
 // reach the same verdicts.
 #include <cstddef>
+#include <optional>
 
+#include "shadowproof/constructions/classify.h"
 #include "shadowproof/verify/cases.h"
 #include "shadowproof/verify/conventions.h"
 #include "shadowproof/verify/grade.h"
@@ -31,9 +33,13 @@ struct pending_outputs {
   }
 };
 
-/// Sets g.outputs[j].v for every pending output j. `mode` naive uses rationals only.
+/// Sets g.outputs[j].v for every pending output j: from the operation's sensitivity kernel when
+/// it decides (filtered mode), from the generic derivatives otherwise (`mode` naive: rationals
+/// only). `reference` holds the canonical outputs correctly rounded (NaN where undefined) and
+/// `cls` the exact class of a shadow-point case, for the kernel.
 void decide_pending(case_grade& g, const test_case& c, const conventions& conv, const double* got,
-                    const pending_outputs& pending, oracle_mode mode);
+                    const pending_outputs& pending, oracle_mode mode, const double* reference,
+                    std::optional<point_class> cls);
 
 /// True when |got − ref| ≤ c·u |f| for every real f that rounds to ref (so η ≤ c·u whatever the
 /// derivatives): the cheap proof that an output a few ulps off is stable. ref is finite, non-zero.

@@ -11,6 +11,7 @@
 #include "case_generation.h"
 #include "exact_outputs.h"
 #include "oracle_fast.h"
+#include "sensitivity.h"
 #include "shadowproof/verify/cases.h"
 #include "shadowproof/verify/conventions.h"
 #include "shadowproof/verify/grade.h"
@@ -63,6 +64,9 @@ struct operation_spec {
   /// (docs/verdicts.md). The number of roundings on the longest path of a straightforward
   /// evaluation of an output, so that any such evaluation is stable.
   int stable_constant = 0;
+  /// A dedicated kernel bounding D_i = Σ_j |∂f_i/∂x_j| |x_j| in closed form (sensitivity.h), which
+  /// spares most verdicts the generic derivatives; null when the operation has none.
+  sensitivity_kernel sensitivity = nullptr;
   /// The outputs of a documented sentinel (zero, identity) in canonical order, or false when
   /// the sentinel means nothing for this operation.
   bool (*sentinel_outputs)(sentinel_kind kind, double* outputs) = nullptr;

@@ -192,7 +192,7 @@ references exact_references(const test_case& c, const conventions& conv, const d
   }
   for (std::size_t j = 0; j < n; ++j) {
     r.defined[j] = defined[j];
-    if (defined[j]) r.value[j] = static_cast<double>(round_exact<F>(ref[j]));
+    r.value[j] = defined[j] ? static_cast<double>(round_exact<F>(ref[j])) : std::numeric_limits<double>::quiet_NaN();
   }
   return r;
 }
@@ -313,7 +313,16 @@ void assign_verdicts(case_grade& g, const test_case& c, const conventions& conv,
       pending.add(j, detail::pending_kind::finite);
     }
   }
-  detail::decide_pending(g, c, conv, got, pending, mode);
+  if (pending.count) {
+    // The kernels read the references in canonical order: the implementation's order unless
+    // its layout transposes.
+    std::array<double, 16> canonical;
+    const std::size_t k = spec.signature.matrix_size;
+    const bool transposed = k && detail::canonical_index(1, k, conv) != 1;
+    if (transposed)
+      for (std::size_t j = 0; j < n; ++j) canonical[detail::canonical_index(j, k, conv)] = r.value[j];
+    detail::decide_pending(g, c, conv, got, pending, mode, transposed ? canonical.data() : r.value.data(), r.cls);
+  }
   g.v = verdict::exact;
   g.verdict_output = 0;
   for (std::size_t j = 0; j < n; ++j)
@@ -326,9 +335,9 @@ void assign_verdicts(case_grade& g, const test_case& c, const conventions& conv,
 // The grade of a case from its references, and what its outputs mean beyond their values.
 template <class F>
 void finish_grade(case_grade& g, const test_case& c, const conventions& conv, const double* got,
-                  const references& r, std::size_t n, oracle_mode mode) {
+                  const references& r, std::size_t n, oracle_mode mode, grade_depth depth) {
   grade_outputs<F>(g, c, n, got, r);
-  assign_verdicts<F>(g, c, conv, got, r, n, mode);
+  if (depth == grade_depth::verdicts) assign_verdicts<F>(g, c, conv, got, r, n, mode);
   const detail::operation_spec& spec = detail::spec_of(c.op);
   if (spec.grade_meaning) {
     g.exact_class = r.cls;
@@ -337,17 +346,18 @@ void finish_grade(case_grade& g, const test_case& c, const conventions& conv, co
 }
 
 template <class N, class F>
-case_grade grade_with(const test_case& c, const conventions& conv, const double* got, oracle_mode mode) {
+case_grade grade_with(const test_case& c, const conventions& conv, const double* got, oracle_mode mode,
+                      grade_depth depth) {
   const references r = exact_references<N, F>(c, conv, got);
   case_grade g;
-  finish_grade<F>(g, c, conv, got, r, signature(c.op).output_count, mode);
+  finish_grade<F>(g, c, conv, got, r, signature(c.op).output_count, mode, depth);
   return g;
 }
 
 // The operation's dedicated kernels (oracle_fast.h); false when it has none for this type, the
 // case is graded up to scale, or they cannot decide it.
 template <class F>
-bool grade_fast(const test_case& c, const conventions& conv, const double* got, case_grade& out) {
+bool grade_fast(const test_case& c, const conventions& conv, const double* got, case_grade& out, grade_depth depth) {
   const detail::operation_spec& spec = detail::spec_of(c.op);
   const auto kernel = std::is_same_v<F, float> ? spec.fast_f32 : spec.fast_f64;
   if (!kernel || detail::graded_up_to_scale(spec, conv)) return false;
@@ -359,35 +369,35 @@ bool grade_fast(const test_case& c, const conventions& conv, const double* got, 
   r.any_undefined = !fast.defined;
   r.cls = fast.cls;
   for (std::size_t j = 0; j < fast.count; ++j) {
-    r.value[j] = fast.value[detail::canonical_index(j, k, conv)];
+    r.value[j] = fast.defined ? fast.value[detail::canonical_index(j, k, conv)] : std::numeric_limits<double>::quiet_NaN();
     r.defined[j] = fast.defined;
   }
-  finish_grade<F>(out, c, conv, got, r, fast.count, oracle_mode::filtered);
+  finish_grade<F>(out, c, conv, got, r, fast.count, oracle_mode::filtered, depth);
   return true;
 }
 
 }  // namespace
 
 case_grade grade_case(const test_case& c, const conventions& conv, const double* outputs,
-                      oracle_mode mode, oracle_counters* counters) {
+                      oracle_mode mode, oracle_counters* counters, grade_depth depth) {
   if (mode == oracle_mode::filtered) {
     case_grade fast;
-    if (c.type == scalar_type::f32 ? grade_fast<float>(c, conv, outputs, fast)
-                                   : grade_fast<double>(c, conv, outputs, fast)) {
+    if (c.type == scalar_type::f32 ? grade_fast<float>(c, conv, outputs, fast, depth)
+                                   : grade_fast<double>(c, conv, outputs, fast, depth)) {
       if (counters) ++counters->decided_by_intervals;
       return fast;
     }
     try {
-      case_grade g = c.type == scalar_type::f32 ? grade_with<ival32, float>(c, conv, outputs, mode)
-                                                : grade_with<ival64, double>(c, conv, outputs, mode);
+      case_grade g = c.type == scalar_type::f32 ? grade_with<ival32, float>(c, conv, outputs, mode, depth)
+                                                : grade_with<ival64, double>(c, conv, outputs, mode, depth);
       if (counters) ++counters->decided_by_intervals;
       return g;
     } catch (const detail::undecided&) {
       if (counters) ++counters->fell_back_to_rationals;
     }
   }
-  return c.type == scalar_type::f32 ? grade_with<rational, float>(c, conv, outputs, mode)
-                                    : grade_with<rational, double>(c, conv, outputs, mode);
+  return c.type == scalar_type::f32 ? grade_with<rational, float>(c, conv, outputs, mode, depth)
+                                    : grade_with<rational, double>(c, conv, outputs, mode, depth);
 }
 
 }  // namespace shadowproof

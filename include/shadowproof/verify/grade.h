@@ -110,6 +110,12 @@ enum class oracle_mode {
   naive,     ///< exact rationals throughout
 };
 
+/// What grade_case decides besides the values: `verdicts` (the default) also gives every output
+/// its verdict, which takes the exact derivatives for outputs more than an ulp off whose relative
+/// error alone does not prove them stable; `values_only` leaves every verdict `exact` (to measure
+/// what the verdicts cost, bench/bench_oracle --ratio).
+enum class grade_depth { verdicts, values_only };
+
 /// Counters of the filtered oracle (how often intervals decided a whole case).
 struct oracle_counters {
   std::uint64_t decided_by_intervals = 0;
@@ -128,7 +134,8 @@ struct oracle_counters {
 /// Every output and the case get a verdict (see verdict). Both oracle modes give identical
 /// grades.
 case_grade grade_case(const test_case& c, const conventions& conv, const double* outputs,
-                      oracle_mode mode = oracle_mode::filtered, oracle_counters* counters = nullptr);
+                      oracle_mode mode = oracle_mode::filtered, oracle_counters* counters = nullptr,
+                      grade_depth depth = grade_depth::verdicts);
 
 /// The first-order conditioning of one output, from the exact partial derivatives, rounded to
 /// double for reports. With f the exact value (times the scale λ when graded up to scale), g the

@@ -85,6 +85,7 @@ operation_spec make() {
   s.generate = generate;
   s.closeness = closeness;
   SHADOWPROOF_EXACT_TEMPLATE(s, exact);
+  s.sensitivity = normal_matrix_sensitivity;
   s.stable_constant = 14;
   s.sentinel_outputs = matrix3_sentinels;
   s.reproducer = reproducer;

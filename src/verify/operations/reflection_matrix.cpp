@@ -75,6 +75,7 @@ operation_spec make() {
   s.generate = generate;
   s.closeness = closeness;
   SHADOWPROOF_EXACT_TEMPLATE(s, exact);
+  s.sensitivity = reflection_matrix_sensitivity;
   s.stable_constant = 14;
   s.sentinel_outputs = matrix_sentinels;
   s.fast_f32 = fast_reflection_matrix_f32;

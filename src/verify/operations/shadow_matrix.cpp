@@ -46,6 +46,7 @@ operation_spec make() {
   s.generate = generate;
   s.closeness = closeness;
   SHADOWPROOF_EXACT_TEMPLATE(s, exact);
+  s.sensitivity = shadow_matrix_sensitivity;
   s.stable_constant = 6;
   s.sentinel_outputs = matrix_sentinels;
   s.fast_f32 = fast_shadow_matrix_f32;

@@ -268,6 +268,7 @@ operation_spec make() {
   s.generate = generate;
   s.closeness = closeness;
   SHADOWPROOF_EXACT_TEMPLATE(s, exact);
+  s.sensitivity = shadow_point_sensitivity;
   s.stable_constant = 14;
   s.sentinel_outputs = point_sentinels;
   s.fast_f32 = fast_shadow_point_f32;
