@@ -20,6 +20,7 @@
 #include "shadowproof/impls/builtin.h"
 #include "shadowproof/verify/cases.h"
 #include "shadowproof/verify/grade.h"
+#include "shadowproof/verify/protocol.h"
 #include "shadowproof/verify/report.h"
 #include "verify_print.h"
 
@@ -36,6 +37,7 @@ struct check_options {
   bool wide = false;
   bool list = false;
   std::string svg;
+  std::string input;
   std::optional<std::uint64_t> max_ulps;
   std::string fail_on;
 };
@@ -45,7 +47,26 @@ struct impl_run {
   const implementation* impl;
   std::vector<test_case> cases;
   std::vector<case_grade> grades;
+  const test_case& by_id(std::uint64_t id) const {
+    if (id < cases.size() && cases[id].id == id) return cases[id];  // generated cases: id = index
+    for (const auto& c : cases)
+      if (c.id == id) return c;
+    throw internal_error("a grade names a case that was not graded");
+  }
 };
+
+// The cases of a case file (`shadowproof cases` format), for reproducing a finding with a
+// built-in implementation.
+std::vector<test_case> read_cases(const std::string& path) {
+  std::ifstream f(path);
+  if (!f) throw error(errc::grade_file, "cannot read the cases file '" + path + "'");
+  std::vector<test_case> cases;
+  std::string line;
+  for (std::size_t n = 1; std::getline(f, line); ++n)
+    if (line.find_first_not_of(" \t\r") != std::string::npos) cases.push_back(parse_case_line(line, n));
+  if (cases.empty()) throw error(errc::grade_empty, "the case file '" + path + "' has no case");
+  return cases;
+}
 
 class progress_bar {
  public:
@@ -171,12 +192,30 @@ int run_check(const check_options& o) {
     throw error(errc::verify_unknown_impl, "implementation '" + o.impl + "' does not compute --op " + o.op);
   }
 
+  std::vector<test_case> given;
+  if (!o.input.empty()) {
+    given = read_cases(o.input);
+    std::vector<const implementation*> matching;
+    for (const implementation* impl : chosen)
+      if (impl->op == given.front().op && impl->type == given.front().type) matching.push_back(impl);
+    if (matching.empty())
+      throw error(errc::verify_unknown_impl, "no chosen implementation computes " + std::string(to_string(given.front().op)) +
+                                             " in " + std::string(to_string(given.front().type)) + " as " + o.input +
+                                             "'s cases need");
+    for (const auto& c : given)
+      if (c.op != given.front().op || c.type != given.front().type)
+        throw error(errc::protocol_case, o.input + ": case " + std::to_string(c.id) + " is not a " +
+                                         std::string(to_string(given.front().op)) + " " +
+                                         std::string(to_string(given.front().type)) + " case like the first");
+    chosen = matching;
+  }
   std::vector<impl_run> runs;
   oracle_counters counters;
   {
     progress_bar bar(chosen.size());
     for (const implementation* impl : chosen) {
-      impl_run r{impl, generate_cases(impl->op, impl->type, o.cases, o.seed, class_filter, impl->conv), {}};
+      impl_run r{impl, given.empty() ? generate_cases(impl->op, impl->type, o.cases, o.seed, class_filter, impl->conv)
+                                     : given, {}};
       r.grades = run_and_grade(*impl, r.cases, oracle_mode::filtered, &counters);
       runs.push_back(std::move(r));
       bar.step(impl->name);
@@ -198,7 +237,7 @@ int run_check(const check_options& o) {
     nlohmann::json doc{{"seed", o.seed}, {"cases_per_impl", o.cases}, {"results", nlohmann::json::array()}};
     for (std::size_t i = 0; i < runs.size(); ++i) {
       const auto& r = runs[i];
-      auto lookup = [&r](std::uint64_t id) -> const test_case& { return r.cases.at(id); };
+      auto lookup = [&r](std::uint64_t id) -> const test_case& { return r.by_id(id); };
       nlohmann::json j = summary_json(summaries[i], lookup, r.impl->conv);
       j["impl"] = r.impl->name;
       j["op"] = std::string(to_string(r.impl->op));
@@ -231,8 +270,10 @@ int run_check(const check_options& o) {
     return failed ? 1 : 0;
   }
   const report_style style{o.wide, 100};
-  std::cout << "Graded " << runs.size() << " implementation" << (runs.size() == 1 ? "" : "s") << ", " << o.cases
-            << " cases each (seed " << o.seed << "), against the exact rational answer.\n"
+  std::cout << "Graded " << runs.size() << " implementation" << (runs.size() == 1 ? "" : "s") << ", "
+            << (given.empty() ? std::to_string(o.cases) + " cases each (seed " + std::to_string(o.seed) + ")"
+                              : std::to_string(given.size()) + " cases of " + o.input)
+            << ", against the exact rational answer.\n"
             << "A case's verdict is that of its worst output, an implementation's that of its worst case\n"
             << "(docs/verdicts.md); the table counts cases.\n\n";
   print_verdict_table(std::cout, rows, style);
@@ -242,7 +283,7 @@ int run_check(const check_options& o) {
     if (first) std::cout << "\nWorst cases (bit-exact; each command prints the exact answer):\n";
     first = false;
     const auto& r = runs[i];
-    auto lookup = [&r](std::uint64_t id) -> const test_case& { return r.cases.at(id); };
+    auto lookup = [&r](std::uint64_t id) -> const test_case& { return r.by_id(id); };
     print_examples(std::cout, r.impl->name, summaries[i], lookup, r.impl->conv, style);
   }
   std::cout << "\nOracle: " << counters.decided_by_intervals << " cases decided by interval arithmetic, "
@@ -270,6 +311,8 @@ const command_registration reg{command{
       app.add_flag("--json", o->json, "print one JSON document (every field, every case's verdict)");
       app.add_flag("--wide", o->wide, "show a worst case per verdict, with every output and the inputs");
       app.add_option("--svg", o->svg, "write a plot of bits of error vs closeness to degeneracy");
+      app.add_option("--input", o->input,
+                     "grade on the cases of this file (the `shadowproof cases` format) instead of generated ones");
       app.add_option("--max-ulps", o->max_ulps,
                      "exit with 1 when an output is more than this many ulps off, or NaN/Inf where the exact "
                      "value exists, or a case is garbage or misclassified");

@@ -255,17 +255,24 @@ void print_verdict_table(std::ostream& out, const std::vector<verdict_row>& rows
 void print_examples(std::ostream& out, const std::string& name, const grade_summary& s, const case_lookup& lookup,
                     const conventions& conv, const report_style& style) {
   std::string head = name + ": " + std::string(to_string(s.worst_verdict)) + " (worst of " + std::to_string(s.cases) +
-                     " cases); max " + ulps_text(s.max_ulps) + " ulps";
+                     (s.cases == 1 ? " case" : " cases") + "); max " + ulps_text(s.max_ulps) + " ulps";
   if (s.nonfinite) head += ", " + std::to_string(s.nonfinite) + " NaN/Inf outputs";
   if (s.garbage) head += ", " + std::to_string(s.garbage) + " garbage outputs";
   if (s.misclassified) head += ", " + std::to_string(s.misclassified) + " misclassified";
   emit(out, head, 0, style.width);
-  if (style.wide) {
-    for (const auto& g : s.examples) print_case(out, "worst " + std::string(to_string(g.v)), g, lookup(g.id), conv, style);
-    return;
+  // Per verdict worse than stable (and stable too with --wide): its worst finite case and its
+  // worst case with a NaN/Inf output; a misclassified case when nothing else shows.
+  const verdict shown_from = style.wide ? verdict::stable : verdict::unstable;
+  bool any = false;
+  for (const auto& g : s.examples) {
+    if (g.v < shown_from) continue;
+    bool nonfinite = false;
+    for (const auto& o : g.outputs) nonfinite = nonfinite || !std::isfinite(o.got);
+    print_case(out, nonfinite ? "non-finite" : "finite", g, lookup(g.id), conv, style, nonfinite);
+    any = true;
   }
-  if (s.worst_finite) print_case(out, "worst finite", *s.worst_finite, lookup(s.worst_finite->id), conv, style);
-  if (s.worst_nonfinite)
+  if (!any && s.worst_finite) print_case(out, "worst", *s.worst_finite, lookup(s.worst_finite->id), conv, style);
+  if (!any && s.worst_nonfinite)
     print_case(out, "worst non-finite", *s.worst_nonfinite, lookup(s.worst_nonfinite->id), conv, style, true);
 }
 

@@ -61,8 +61,9 @@ struct operation_spec {
   exact_function<dual<ival64>> derivatives_ival64 = nullptr;
   exact_function<dual<rational>> derivatives_rational = nullptr;
   /// c of the `stable` verdict: an output whose mixed backward error is at most c·u is stable
-  /// (docs/verdicts.md). The number of roundings on the longest path of a straightforward
-  /// evaluation of an output, so that any such evaluation is stable.
+  /// (docs/verdicts.md). Twice the number of roundings on the longest path of a straightforward
+  /// evaluation of an output (a product of two computed factors adds both their errors), so that
+  /// such evaluations come out stable.
   int stable_constant = 0;
   /// A dedicated kernel bounding D_i = Σ_j |∂f_i/∂x_j| |x_j| in closed form (sensitivity.h), which
   /// spares most verdicts the generic derivatives; null when the operation has none.

@@ -41,7 +41,8 @@ grade_summary summarize(const std::vector<case_grade>& grades, std::size_t keep_
   s.bits_histogram.assign(edges.size() + 1, 0);
   s.verdicts.assign(all_verdicts().size(), 0);
   std::vector<std::uint64_t> ulps;
-  std::vector<const case_grade*> example(all_verdicts().size(), nullptr);
+  std::vector<const case_grade*> example_finite(all_verdicts().size(), nullptr);
+  std::vector<const case_grade*> example_nonfinite(all_verdicts().size(), nullptr);
   const case_grade* worst_finite = nullptr;
   const case_grade* worst_nonfinite = nullptr;
   for (const auto& g : grades) {
@@ -51,10 +52,11 @@ grade_summary summarize(const std::vector<case_grade>& grades, std::size_t keep_
     s.misclassified += g.misclassified ? 1 : 0;
     ++s.verdicts[static_cast<std::size_t>(g.v)];
     if (g.v > s.worst_verdict) s.worst_verdict = g.v;
-    const case_grade*& e = example[static_cast<std::size_t>(g.v)];
+    const bool nonfinite = has_nonfinite_output(g);
+    const case_grade*& e = (nonfinite ? example_nonfinite : example_finite)[static_cast<std::size_t>(g.v)];
     if (!e || worse(g, *e)) e = &g;
     if (g.v > verdict::faithful || g.misclassified) {
-      const case_grade*& w = has_nonfinite_output(g) ? worst_nonfinite : worst_finite;
+      const case_grade*& w = nonfinite ? worst_nonfinite : worst_finite;
       if (!w || worse(g, *w)) w = &g;
     }
     for (const auto& o : g.outputs) {
@@ -80,8 +82,10 @@ grade_summary summarize(const std::vector<case_grade>& grades, std::size_t keep_
   std::partial_sort(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(keep), order.end(),
                     [](const case_grade* a, const case_grade* b) { return worse(*a, *b); });
   for (std::size_t i = 0; i < keep; ++i) s.worst.push_back(*order[i]);
-  for (std::size_t v = all_verdicts().size(); v-- > static_cast<std::size_t>(verdict::stable);)
-    if (example[v]) s.examples.push_back(*example[v]);
+  for (std::size_t v = all_verdicts().size(); v-- > static_cast<std::size_t>(verdict::stable);) {
+    if (example_finite[v]) s.examples.push_back(*example_finite[v]);
+    if (example_nonfinite[v]) s.examples.push_back(*example_nonfinite[v]);
+  }
   if (worst_finite) s.worst_finite = *worst_finite;
   if (worst_nonfinite) s.worst_nonfinite = *worst_nonfinite;
   return s;

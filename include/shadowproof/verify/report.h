@@ -26,8 +26,9 @@ struct grade_summary {
   verdict worst_verdict = verdict::exact;  ///< of every case
   /// The worst cases: by verdict, then by max ulps (`keep_worst` of them).
   std::vector<case_grade> worst;
-  /// For each verdict worse than faithful that occurs, its worst case (most ulps), worst verdict
-  /// first: the examples a report shows.
+  /// For each verdict worse than faithful that occurs, its worst case whose outputs are all
+  /// finite and its worst case with a NaN/±Inf output (most ulps first), worst verdict first:
+  /// the examples a report shows.
   std::vector<case_grade> examples;
   /// The worst case whose outputs are all finite, and the worst case with a NaN/±Inf output that
   /// is not a correct rejection (by verdict, then ulps), when there is one.

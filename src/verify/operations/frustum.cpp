@@ -3,7 +3,8 @@
 // distance f, onto the canonical volume of the declared depth convention.
 // Classes: as ortho; near ≤ 0 (or far ≤ 0) admits no projection, so every output is undefined.
 // Stable: 2n/(r − l), (r + l)/(r − l), A = (n z_near − f z_far)/(f − n) and
-// B = n f (z_near − z_far)/(f − n) take two or three roundings on their longest path: c = 3.
+// B = n f (z_near − z_far)/(f − n) take two or three roundings on their longest path:
+// c = 2 × 3 = 6.
 #include "view_volume.h"
 
 namespace shadowproof::detail {

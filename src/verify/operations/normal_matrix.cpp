@@ -4,7 +4,7 @@
 // relative 2^-k, k = 4 … p−1, never exactly singular); degenerate = exactly singular (third row =
 // 2 × first row); range = A scaled so that det A (a product of three entries) over- or underflows.
 // Stable: a cofactor takes two roundings, det A = Σ a_0j C_0j three more, the quotient C_ij/det A
-// one, and 1/det A then a product one more: c = 7.
+// one, and 1/det A then a product one more: seven, c = 2 × 7 = 14.
 #include "shadowproof/constructions/normal_matrix.h"
 
 #include <cmath>

@@ -4,7 +4,7 @@
 // far ≫ near; degenerate = l = r, b = t or n = f (those rows' scale and offset undefined); range
 // = the box scaled so that r − l, f + n overflow or 2/(r − l) leaves the range.
 // Stable: 2/(r − l) and (r + l)/(r − l) take two roundings on their longest path, z_near + A n
-// three (A, then A n): c = 3.
+// three (A, then A n): c = 2 × 3 = 6.
 #include "view_volume.h"
 
 namespace shadowproof::detail {

@@ -6,7 +6,7 @@
 // degenerate = n = f (A and B undefined, the rest defined); range = n and f scaled so that n f
 // over- or underflows. c, aspect, n or f ≤ 0 admits no projection: every output is undefined.
 // Stable: c/aspect takes one rounding, A and B two or three (B = 2 f n r with r = 1/(n − f) takes
-// three): c = 3.
+// three): c = 2 × 3 = 6.
 #include <cmath>
 #include <limits>
 

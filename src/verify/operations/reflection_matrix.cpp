@@ -8,8 +8,8 @@
 // normal whose |n|² over- or underflows the type (the mirror itself is an ordinary plane; only
 // formulas that square n fail there).
 // Stable: n·n takes three products and two sums (three roundings on its longest path), then
-// 2 n_i n_j (one), the quotient (one) and 1 − q (one): c = 6; normalising first with a square
-// root takes about as many.
+// 2 n_i n_j (one), the quotient (one) and 1 − q (one): six; normalising first with a square root
+// adds one: seven roundings, c = 2 × 7 = 14.
 #include "shadowproof/constructions/reflect.h"
 
 #include <cmath>

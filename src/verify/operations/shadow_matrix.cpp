@@ -4,8 +4,8 @@
 // (directional) or of lying on (point) the receiver; degenerate = exactly so, P·L = 0; range =
 // P and L scaled so that their products over- or underflow.
 // Stable: an entry is −L_i P_j (one rounding) or Σ_{k≠i} P_k L_k (three products, two sums: three
-// roundings on its longest path), so c = 3: the evaluation (P·L) − L_i P_i, which rounds P·L
-// first, is not stable where L_i P_i dominates the entry.
+// roundings on its longest path), so c = 2 × 3 = 6 (docs/verdicts.md); the evaluation
+// (P·L) − L_i P_i, which rounds P·L first, is not stable where L_i P_i dominates the entry.
 #include "shadowproof/constructions/shadow.h"
 
 #include "../operation_table.h"

@@ -6,7 +6,7 @@
 // range = P and L scaled (the image does not move) so that P·L and P·V over- or underflow.
 // Stable: (s V − t L) / (s − w t) with s = P·L, t = P·V + d: s and t take four products and three
 // sums (four roundings on the longest path of a dot product of four terms), then s·V_i, the
-// difference and the quotient add three: c = 7.
+// difference and the quotient add three: seven roundings, c = 2 × 7 = 14.
 // Beyond the values, the grade says where the float image lies on the line through the light
 // and V (image_class), and whether that contradicts the exact class of V.
 #include "shadowproof/constructions/shadow.h"
