@@ -23,7 +23,18 @@ struct cases_options {
   bool unit_normal = false;
   bool symmetric = false;
   bool clamps = false;
+  std::vector<std::string> conventions;  // name=value, written into every line
 };
+
+// Applies "name=value" texts (the protocol's convention spellings) to conv.
+void apply_conventions(conventions& conv, const std::vector<std::string>& texts) {
+  for (const auto& t : texts) {
+    const auto eq = t.find('=');
+    if (eq == std::string::npos)
+      throw error(errc::protocol_convention, "--convention '" + t + "' must read name=value, e.g. depth=d3d");
+    set_convention(conv, t.substr(0, eq), t.substr(eq + 1));
+  }
+}
 
 int run_cases(const cases_options& o) {
   const auto op = operation_from_string(o.op);
@@ -42,13 +53,14 @@ int run_cases(const cases_options& o) {
   if (o.directional && o.point_lights)
     throw error(errc::verify_requirements, "--directional and --point-lights exclude each other");
   conventions requirements;
+  apply_conventions(requirements, o.conventions);
   requirements.directional_only = o.directional;
   requirements.point_light_only = o.point_lights;
   requirements.unit_normal = o.unit_normal;
-  requirements.symmetric_view = o.symmetric;
-  requirements.clamps_behind_receiver = o.clamps;
+  requirements.symmetric_view = requirements.symmetric_view || o.symmetric;
+  requirements.clamps_behind_receiver = requirements.clamps_behind_receiver || o.clamps;
   for (const auto& c : generate_cases(*op, *type, o.count, o.seed, cls, requirements))
-    std::cout << case_json_line(c) << '\n';
+    std::cout << case_json_line(c, requirements) << '\n';
   return 0;
 }
 
@@ -69,6 +81,10 @@ const command_registration reg{command{
       app.add_flag("--clamps-behind-receiver", o->clamps,
                    "shadow-point: receivers oriented with the light on their positive side (for routines that "
                    "leave points behind the receiver in place)");
+      app.add_option("--convention", o->conventions,
+                     "name=value, repeatable: a convention written into every line, in which the inputs "
+                     "are written and the outputs read (docs/protocol.md), e.g. depth=d3d, handedness=left, "
+                     "angle=degrees, plane=n.x=d, matrix3=mat4, layout=column-major, symmetric=true");
       return [o] { return run_cases(*o); };
     }}};
 

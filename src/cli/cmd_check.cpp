@@ -238,7 +238,8 @@ int run_check(const check_options& o) {
     for (std::size_t i = 0; i < runs.size(); ++i) {
       const auto& r = runs[i];
       auto lookup = [&r](std::uint64_t id) -> const test_case& { return r.by_id(id); };
-      nlohmann::json j = summary_json(summaries[i], lookup, r.impl->conv);
+      auto conv_of = [&r](std::uint64_t) -> const conventions& { return r.impl->conv; };
+      nlohmann::json j = summary_json(summaries[i], lookup, conv_of);
       j["impl"] = r.impl->name;
       j["op"] = std::string(to_string(r.impl->op));
       j["type"] = std::string(to_string(r.impl->type));
@@ -251,7 +252,7 @@ int run_check(const check_options& o) {
           if (g.cls == cls) part.push_back(g);
         if (part.empty()) continue;
         const grade_summary s = summarize(part, 1);
-        nlohmann::json c = summary_json(s, lookup, r.impl->conv);
+        nlohmann::json c = summary_json(s, lookup, conv_of);
         c.erase("examples");
         by_class[std::string(to_string(cls))] = c;
       }
@@ -284,7 +285,8 @@ int run_check(const check_options& o) {
     first = false;
     const auto& r = runs[i];
     auto lookup = [&r](std::uint64_t id) -> const test_case& { return r.by_id(id); };
-    print_examples(std::cout, r.impl->name, summaries[i], lookup, r.impl->conv, style);
+    auto conv_of = [&r](std::uint64_t) -> const conventions& { return r.impl->conv; };
+    print_examples(std::cout, r.impl->name, summaries[i], lookup, conv_of, style);
   }
   std::cout << "\nOracle: " << counters.decided_by_intervals << " cases decided by interval arithmetic, "
             << counters.fell_back_to_rationals << " by exact rationals.\n";

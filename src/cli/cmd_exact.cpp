@@ -13,6 +13,7 @@
 #include "shadowproof/verify/conventions.h"
 #include "shadowproof/verify/exact.h"
 #include "shadowproof/verify/operation.h"
+#include "shadowproof/verify/protocol.h"
 
 namespace shadowproof::cli {
 namespace {
@@ -20,6 +21,7 @@ namespace {
 struct exact_options {
   std::string op, type = "f32", inputs, light = "towards-light", depth = "gl";
   bool clamps = false, symmetric = false, json = false;
+  std::vector<std::string> conventions;  // name=value
 };
 
 int run_exact(const exact_options& o, const global_options& g) {
@@ -34,6 +36,12 @@ int run_exact(const exact_options& o, const global_options& g) {
   conv.depth = parse_depth_convention(o.depth);
   conv.clamps_behind_receiver = o.clamps;
   conv.symmetric_view = o.symmetric;
+  for (const auto& t : o.conventions) {
+    const auto eq = t.find('=');
+    if (eq == std::string::npos)
+      throw error(errc::protocol_convention, "--convention '" + t + "' must read name=value, e.g. handedness=left");
+    set_convention(conv, t.substr(0, eq), t.substr(eq + 1));
+  }
   test_case c;
   c.op = *op;
   c.type = *type;
@@ -47,7 +55,7 @@ int run_exact(const exact_options& o, const global_options& g) {
     c.inputs.push_back(x == 0 ? 0.0 : x);
   }
   if (const std::string why = invalid_inputs_reason(c); !why.empty()) throw error(errc::protocol_case, why);
-  const exact_answer a = exact_answer_of(c, conv);
+  const exact_result a = exact_result_of(c, conv);
   const std::vector<double> rounded = correctly_rounded_outputs(c, conv);
   if (o.json) {
     nlohmann::json doc{{"op", o.op}, {"type", o.type}, {"outputs", nlohmann::json::array()}};
@@ -88,6 +96,8 @@ const command_registration reg{command{
       app.add_option("--depth", o->depth, "projections: NDC depth convention gl, d3d or reverse-z")->capture_default_str();
       app.add_flag("--clamps-behind-receiver", o->clamps, "shadow-point: a point behind the receiver stays in place");
       app.add_flag("--symmetric", o->symmetric, "view volumes are symmetric (l = −r, b = −t)");
+      app.add_option("--convention", o->conventions,
+                     "name=value, repeatable (docs/protocol.md): handedness=left, angle=degrees, ...");
       app.add_flag("--json", o->json, "print one JSON object");
       return [o, &g] { return run_exact(*o, g); };
     }}};

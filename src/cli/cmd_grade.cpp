@@ -34,6 +34,7 @@ struct grade_options {
   bool wide = false;
   std::optional<std::uint64_t> max_ulps;
   std::string fail_on;
+  std::vector<std::string> conventions;  // name=value
 };
 
 std::vector<std::string> read_lines(const std::string& path, const char* what) {
@@ -58,7 +59,7 @@ std::string id_list(const std::vector<std::uint64_t>& ids) {
   return s;
 }
 
-conventions declared_conventions(const grade_options& o) {
+conventions conventions_of(const grade_options& o) {
   conventions conv;
   if (o.layout == "row-major") conv.storage = storage_order::row_major;
   else if (o.layout == "column-major") conv.storage = storage_order::column_major;
@@ -76,6 +77,12 @@ conventions declared_conventions(const grade_options& o) {
   conv.clamps_behind_receiver = o.clamps;
   conv.symmetric_view = o.symmetric;
   conv.depth = parse_depth_convention(o.depth);
+  for (const auto& t : o.conventions) {
+    const auto eq = t.find('=');
+    if (eq == std::string::npos)
+      throw error(errc::protocol_convention, "--convention '" + t + "' must read name=value, e.g. depth=d3d");
+    set_convention(conv, t.substr(0, eq), t.substr(eq + 1));
+  }
   return conv;
 }
 
@@ -91,20 +98,23 @@ std::optional<verdict> parse_fail_on(const std::string& text) {
 }
 
 int run_grade(const grade_options& o) {
-  const conventions conv = declared_conventions(o);
+  const conventions conv = conventions_of(o);
   const std::optional<verdict> fail_on = parse_fail_on(o.fail_on);
 
   const auto case_lines = read_lines(o.cases_path, "cases");
   if (case_lines.empty()) throw error(errc::grade_empty, "the case file '" + o.cases_path + "' has no case");
   std::vector<test_case> cases;
+  std::vector<conventions> case_conv;  // the command line's, overridden by the line's own
   std::map<std::uint64_t, std::size_t> index;
   for (std::size_t i = 0; i < case_lines.size(); ++i) {
-    cases.push_back(parse_case_line(case_lines[i], i + 1));
+    case_conv.push_back(conv);
+    cases.push_back(parse_case_line(case_lines[i], i + 1, case_conv.back()));
     if (!index.emplace(cases.back().id, i).second)
       throw error(errc::grade_duplicate_id, o.cases_path + " line " + std::to_string(i + 1) + ": case id " +
                                             std::to_string(cases.back().id) + " appears twice");
-    if (!sentinel_applies(cases.back().op, conv.sentinel))
-      throw error(errc::verify_sentinel, "--sentinel " + o.sentinel + " means nothing for " +
+    if (!sentinel_applies(cases.back().op, case_conv.back().sentinel))
+      throw error(errc::verify_sentinel, "--sentinel " + std::string(to_string(case_conv.back().sentinel)) +
+                                         " means nothing for " +
                                          std::string(to_string(cases.back().op)) + " outputs");
   }
   const auto output_lines = read_lines(o.outputs_path, "outputs");
@@ -133,8 +143,9 @@ int run_grade(const grade_options& o) {
                                             std::to_string(id) + " graded twice");
     seen[it->second] = true;
     const test_case& c = cases[it->second];
-    const output_line out = parse_output_line(output_lines[i], i + 1, c.type, signature(c.op).output_count);
-    grades.push_back(grade_case(c, conv, out.values.data(), oracle_mode::filtered, &counters));
+    const conventions& cc = case_conv[it->second];
+    const output_line out = parse_output_line(output_lines[i], i + 1, c, cc);
+    grades.push_back(grade_case(c, cc, out.values.data(), oracle_mode::filtered, &counters));
   }
   std::vector<std::uint64_t> missing;
   for (std::size_t i = 0; i < cases.size(); ++i)
@@ -145,13 +156,14 @@ int run_grade(const grade_options& o) {
 
   const std::string name = o.name.empty() ? std::filesystem::path(o.outputs_path).stem().string() : o.name;
   auto lookup = [&](std::uint64_t id) -> const test_case& { return cases[index.at(id)]; };
+  auto conv_of = [&](std::uint64_t id) -> const conventions& { return case_conv[index.at(id)]; };
   const grade_summary all = summarize(grades, 5);
   const bool ulps_failed = o.max_ulps && (all.max_ulps > *o.max_ulps || all.nonfinite > 0 || all.garbage > 0 ||
                                           all.misclassified > 0);
   const bool verdict_failed = fail_on && reaches(all, *fail_on);
   const bool failed = ulps_failed || verdict_failed;
   if (o.json) {
-    nlohmann::json doc = summary_json(all, lookup, conv);
+    nlohmann::json doc = summary_json(all, lookup, conv_of);
     doc["name"] = name;
     doc["conventions"] = conventions_json(conv);
     nlohmann::json by_class = nlohmann::json::object();
@@ -160,7 +172,7 @@ int run_grade(const grade_options& o) {
       for (const auto& g : grades)
         if (g.cls == cls) part.push_back(g);
       if (part.empty()) continue;
-      nlohmann::json c = summary_json(summarize(part, 1), lookup, conv);
+      nlohmann::json c = summary_json(summarize(part, 1), lookup, conv_of);
       c.erase("examples");
       by_class[std::string(to_string(cls))] = c;
     }
@@ -179,9 +191,12 @@ int run_grade(const grade_options& o) {
     return failed ? 1 : 0;
   }
   const report_style style{o.wide, 100};
-  std::cout << "Graded " << grades.size() << " cases of " << to_string(cases.front().op) << " ("
-            << to_string(cases.front().type) << ") against the exact answer: " << name << " is "
-            << to_string(all.worst_verdict) << ".\n\n";
+  bool one_kind = true;
+  for (const auto& c : cases) one_kind = one_kind && c.op == cases.front().op && c.type == cases.front().type;
+  std::cout << "Graded " << grades.size() << " cases of "
+            << (one_kind ? std::string(to_string(cases.front().op)) + " (" + std::string(to_string(cases.front().type)) + ")"
+                         : std::string("several operations"))
+            << " against the exact answer: " << name << " is " << to_string(all.worst_verdict) << ".\n\n";
   std::vector<verdict_row> rows;
   for (input_class cls : all_input_classes()) {
     std::vector<case_grade> part;
@@ -193,7 +208,7 @@ int run_grade(const grade_options& o) {
   print_verdict_table(std::cout, rows, style);
   if (all.worst_verdict > verdict::faithful || all.misclassified) {
     std::cout << "\nWorst cases (bit-exact; each command prints the exact answer):\n";
-    print_examples(std::cout, name, all, lookup, conv, style);
+    print_examples(std::cout, name, all, lookup, conv_of, style);
   }
   if (o.max_ulps)
     std::cout << '\n' << (ulps_failed ? "FAIL" : "PASS") << ": --max-ulps " << *o.max_ulps
@@ -225,6 +240,9 @@ const command_registration reg{command{
           ->capture_default_str();
       app.add_flag("--clamps-behind-receiver", o->clamps, "shadow-point: a point behind the receiver stays in place");
       app.add_flag("--symmetric", o->symmetric, "view volumes are symmetric (l = −r, b = −t)");
+      app.add_option("--convention", o->conventions,
+                     "name=value, repeatable (docs/protocol.md): handedness=left, angle=degrees, matrix3=mat4, ...; "
+                     "a case line's own \"conventions\" override the command line's for that case");
       app.add_flag("--json", o->json, "print one JSON object (every field, every case's verdict)");
       app.add_flag("--wide", o->wide, "show a worst case per verdict, with every output and the inputs");
       app.add_option("--max-ulps", o->max_ulps, "exit with 1 when an output is more than this many ulps off, or NaN/Inf "

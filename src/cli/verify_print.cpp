@@ -253,7 +253,7 @@ void print_verdict_table(std::ostream& out, const std::vector<verdict_row>& rows
 }
 
 void print_examples(std::ostream& out, const std::string& name, const grade_summary& s, const case_lookup& lookup,
-                    const conventions& conv, const report_style& style) {
+                    const conventions_lookup& conv_of, const report_style& style) {
   std::string head = name + ": " + std::string(to_string(s.worst_verdict)) + " (worst of " + std::to_string(s.cases) +
                      (s.cases == 1 ? " case" : " cases") + "); max " + ulps_text(s.max_ulps) + " ulps";
   if (s.nonfinite) head += ", " + std::to_string(s.nonfinite) + " NaN/Inf outputs";
@@ -268,12 +268,14 @@ void print_examples(std::ostream& out, const std::string& name, const grade_summ
     if (g.v < shown_from) continue;
     bool nonfinite = false;
     for (const auto& o : g.outputs) nonfinite = nonfinite || !std::isfinite(o.got);
-    print_case(out, nonfinite ? "non-finite" : "finite", g, lookup(g.id), conv, style, nonfinite);
+    print_case(out, nonfinite ? "non-finite" : "finite", g, lookup(g.id), conv_of(g.id), style, nonfinite);
     any = true;
   }
-  if (!any && s.worst_finite) print_case(out, "worst", *s.worst_finite, lookup(s.worst_finite->id), conv, style);
+  if (!any && s.worst_finite)
+    print_case(out, "worst", *s.worst_finite, lookup(s.worst_finite->id), conv_of(s.worst_finite->id), style);
   if (!any && s.worst_nonfinite)
-    print_case(out, "worst non-finite", *s.worst_nonfinite, lookup(s.worst_nonfinite->id), conv, style, true);
+    print_case(out, "worst non-finite", *s.worst_nonfinite, lookup(s.worst_nonfinite->id),
+               conv_of(s.worst_nonfinite->id), style, true);
 }
 
 nlohmann::json verdict_counts_json(const grade_summary& s) {
@@ -294,6 +296,8 @@ nlohmann::json conventions_json(const conventions& c) {
           {"point_light_only", c.point_light_only},
           {"unit_normal", c.unit_normal},
           {"symmetric_view", c.symmetric_view},
+          {"handedness", std::string(to_string(c.hand))},
+          {"angle", std::string(to_string(c.angle))},
           {"clamps_behind_receiver", c.clamps_behind_receiver}};
 }
 
@@ -361,10 +365,11 @@ nlohmann::json case_json(const case_grade& g, const test_case& c, const conventi
   return j;
 }
 
-nlohmann::json summary_json(const grade_summary& s, const case_lookup& lookup, const conventions& conv) {
+nlohmann::json summary_json(const grade_summary& s, const case_lookup& lookup, const conventions_lookup& conv_of) {
+  auto one = [&](const case_grade& g) { return case_json(g, lookup(g.id), conv_of(g.id)); };
   auto cases = [&](const std::vector<case_grade>& list) {
     nlohmann::json a = nlohmann::json::array();
-    for (const auto& g : list) a.push_back(case_json(g, lookup(g.id), conv));
+    for (const auto& g : list) a.push_back(one(g));
     return a;
   };
   nlohmann::json j{{"cases", s.cases},
@@ -380,9 +385,8 @@ nlohmann::json summary_json(const grade_summary& s, const case_lookup& lookup, c
                    {"misclassified", s.misclassified},
                    {"worst", cases(s.worst)},
                    {"examples", cases(s.examples)}};
-  j["worst_finite"] = s.worst_finite ? case_json(*s.worst_finite, lookup(s.worst_finite->id), conv) : nlohmann::json(nullptr);
-  j["worst_nonfinite"] =
-      s.worst_nonfinite ? case_json(*s.worst_nonfinite, lookup(s.worst_nonfinite->id), conv) : nlohmann::json(nullptr);
+  j["worst_finite"] = s.worst_finite ? one(*s.worst_finite) : nlohmann::json(nullptr);
+  j["worst_nonfinite"] = s.worst_nonfinite ? one(*s.worst_nonfinite) : nlohmann::json(nullptr);
   return j;
 }
 

@@ -32,6 +32,8 @@ struct verdict_row {
 
 /// Finds the case a grade refers to (by id).
 using case_lookup = std::function<const test_case&(std::uint64_t id)>;
+/// Finds the conventions a case is graded in (by id).
+using conventions_lookup = std::function<const conventions&(std::uint64_t id)>;
 
 /// The verdict table: label, verdict, then the cases of each verdict.
 void print_verdict_table(std::ostream& out, const std::vector<verdict_row>& rows, const report_style& style);
@@ -40,7 +42,7 @@ void print_verdict_table(std::ostream& out, const std::vector<verdict_row>& rows
 /// (wide: one case per verdict worse than faithful), each with the output that decided its
 /// verdict, the conditioning and the command that prints the exact answer.
 void print_examples(std::ostream& out, const std::string& name, const grade_summary& s, const case_lookup& lookup,
-                    const conventions& conv, const report_style& style);
+                    const conventions_lookup& conv_of, const report_style& style);
 
 /// A count of ulps: the number itself below 2^16, a power of two above ("2^31.2").
 std::string ulps_text(std::uint64_t ulps);
@@ -55,7 +57,7 @@ std::string wrap_command(const std::string& command, std::size_t indent, std::si
 /// JSON of a summary: cases, verdict, verdicts (counts by name), max_ulps, median_ulps, max_bits,
 /// bits_histogram, nonfinite, garbage, misclassified, worst (cases), worst_finite,
 /// worst_nonfinite, examples.
-nlohmann::json summary_json(const grade_summary& s, const case_lookup& lookup, const conventions& conv);
+nlohmann::json summary_json(const grade_summary& s, const case_lookup& lookup, const conventions_lookup& conv_of);
 
 /// One case as JSON: id, class, closeness, verdict, rejected, the deciding output (name, got,
 /// expected, ulps, bits, relative error, condition, backward error), normwise conditioning,

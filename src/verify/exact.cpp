@@ -7,10 +7,10 @@
 
 namespace shadowproof {
 
-exact_answer exact_answer_of(const test_case& c, const conventions& conv) {
+exact_result exact_result_of(const test_case& c, const conventions& conv) {
   const detail::operation_spec& spec = detail::spec_of(c.op);
   const detail::exact_outputs<rational> e = spec.exact_rational(c.inputs.data(), conv);
-  exact_answer a;
+  exact_result a;
   a.cls = e.cls;
   for (std::size_t i = 0; i < spec.signature.output_count; ++i) {
     const bool defined = e.defined && (e.entry_undefined.empty() || !e.entry_undefined[i]);
@@ -21,7 +21,7 @@ exact_answer exact_answer_of(const test_case& c, const conventions& conv) {
 }
 
 std::vector<double> correctly_rounded_outputs(const test_case& c, const conventions& conv, const rational& scale) {
-  const exact_answer a = exact_answer_of(c, conv);
+  const exact_result a = exact_result_of(c, conv);
   const std::size_t k = signature(c.op).matrix_size;
   std::vector<double> out(a.values.size());
   for (std::size_t j = 0; j < out.size(); ++j) {

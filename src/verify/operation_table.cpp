@@ -32,6 +32,8 @@ std::string exact_command(const test_case& c, const conventions& conv) {
   if (conv.depth != depth_convention::gl) s += " --depth " + std::string(to_string(conv.depth));
   if (conv.clamps_behind_receiver) s += " --clamps-behind-receiver";
   if (conv.symmetric_view) s += " --symmetric";
+  if (conv.hand == handedness::left) s += " --convention handedness=left";
+  if (conv.angle == angle_unit::degrees) s += " --convention angle=degrees";
   return s;
 }
 

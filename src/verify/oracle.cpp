@@ -360,7 +360,9 @@ template <class F>
 bool grade_fast(const test_case& c, const conventions& conv, const double* got, case_grade& out, grade_depth depth) {
   const detail::operation_spec& spec = detail::spec_of(c.op);
   const auto kernel = std::is_same_v<F, float> ? spec.fast_f32 : spec.fast_f64;
-  if (!kernel || detail::graded_up_to_scale(spec, conv)) return false;
+  // The kernels compute right-handed matrices; a left-handed convention (column 2 negated) goes
+  // to the generic oracle, whose exact templates apply it.
+  if (!kernel || detail::graded_up_to_scale(spec, conv) || conv.hand == handedness::left) return false;
   detail::fast_reference fast;
   if (!kernel(c.inputs.data(), conv, fast)) return false;
   const std::size_t k = spec.signature.matrix_size;
@@ -369,8 +371,10 @@ bool grade_fast(const test_case& c, const conventions& conv, const double* got, 
   r.any_undefined = !fast.defined;
   r.cls = fast.cls;
   for (std::size_t j = 0; j < fast.count; ++j) {
-    r.value[j] = fast.defined ? fast.value[detail::canonical_index(j, k, conv)] : std::numeric_limits<double>::quiet_NaN();
-    r.defined[j] = fast.defined;
+    const std::size_t i = detail::canonical_index(j, k, conv);
+    r.defined[j] = fast.defined && !((fast.undefined >> i) & 1);
+    r.value[j] = r.defined[j] ? fast.value[i] : std::numeric_limits<double>::quiet_NaN();
+    r.any_undefined = r.any_undefined || !r.defined[j];
   }
   finish_grade<F>(out, c, conv, got, r, fast.count, oracle_mode::filtered, depth);
   return true;

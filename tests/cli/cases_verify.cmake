@@ -66,7 +66,7 @@ shadowproof_cli_case(NAME "check rejects an unknown operation"
 # --- cases ------------------------------------------------------------------------------------
 shadowproof_cli_case(NAME "cases writes the protocol's JSON lines"
   ARGS cases --op shadow-matrix --type f32 --count 2 --seed 7 EXPECT_CODE 0
-  STDOUT_REGEX "^{\"id\": 0, \"op\": \"shadow-matrix\", \"type\": \"f32\", \"class\": \"regular\", \"closeness\": -?[0-9]+\\.[0-9][0-9], \"plane\": \\[\"-?0x[^\"]+\", \"[^\"]+\", \"[^\"]+\", \"[^\"]+\"\\], \"light\": \\[[^]]+\\], \"exact\": {\"plane\": \\[[^]]+\\], \"light\": \\[[^]]+\\]}}\n{\"id\": 1, [^\n]*\"class\": \"near-degenerate\"[^\n]*\n$")
+  STDOUT_REGEX "^{\"id\": 0, \"op\": \"shadow-matrix\", \"type\": \"f32\", \"class\": \"regular\", \"closeness\": -?[0-9]+\\.[0-9][0-9], \"plane\": \\[\"-?0x[^\"]+\", \"[^\"]+\", \"[^\"]+\", \"[^\"]+\"\\], \"light\": \\[[^]]+\\], \"exact\": {\"plane\": \\[[^]]+\\], \"light\": \\[[^]]+\\]}, \"numbers\": {\"plane\": \\[-?[0-9][^]\"]*\\], \"light\": \\[[^]\"]+\\]}}\n{\"id\": 1, [^\n]*\"class\": \"near-degenerate\"[^\n]*\n$")
 shadowproof_cli_case(NAME "cases marks exactly degenerate cases with closeness -inf"
   ARGS cases --op shadow-matrix --type f64 --count 1 --class degenerate EXPECT_CODE 0
   STDOUT_REGEX "\"class\": \"degenerate\", \"closeness\": \"-inf\"")

@@ -5,6 +5,8 @@
 #include <optional>
 #include <string_view>
 
+#include "shadowproof/constructions/handedness.h"
+#include "shadowproof/constructions/irrational.h"
 #include "shadowproof/constructions/project.h"
 
 namespace shadowproof {
@@ -27,6 +29,19 @@ enum class sentinel_kind { none, zero, identity };
 std::string_view to_string(sentinel_kind s);
 /// Inverse of to_string; nothing for an unknown name.
 std::optional<sentinel_kind> sentinel_from_string(std::string_view name);
+
+/// How a plane's fourth number is meant: (a, b, c, d) is a x + b y + c z + d = 0 (`plus_d`, the
+/// canonical form) or a x + b y + c z = d (`equals_d`, e.g. three.js ShadowMesh's reading).
+/// A protocol convention: case files write planes in the declared form and the reader maps
+/// them back exactly (d ↦ −d), so a test_case always holds the canonical form.
+enum class plane_form { plus_d, equals_d };
+/// How a 3x3 matrix (the normal matrix's input and output) is laid out: 9 numbers (`packed`),
+/// 12 (`padded`: three groups of 4, each row or column followed by one unused number, as
+/// WGSL's mat3x3<f32> and wgpu-matrix's mat3 store it), or 16 (`mat4`: embedded as
+/// [A 0; 0 1], as libraries that only have 4x4 matrices use it). A protocol convention: the
+/// reader maps the line to the 9 canonical numbers; padding is ignored, and the embedding's
+/// own entries must be exactly 0 and 1.
+enum class matrix3_layout { packed, padded, mat4 };
 
 /// Declared conventions of an implementation (defaults are the library's canonical forms).
 struct conventions {
@@ -55,6 +70,18 @@ struct conventions {
   bool symmetric_view = false;
   /// The documented answer for a problem without one, accepted besides NaN/±Inf.
   sentinel_kind sentinel = sentinel_kind::none;
+  /// Projections and look-at cameras: eye space looking down −z (right) or +z (left);
+  /// left-handed projections are M · diag(1, 1, −1, 1) (constructions/handedness.h).
+  handedness hand = handedness::right;
+  /// perspective-fov: unit of the field-of-view angle.
+  angle_unit angle = angle_unit::radians;
+  /// Protocol only (case files): how planes are written, see plane_form.
+  plane_form plane = plane_form::plus_d;
+  /// Protocol only (case files): how 3x3 matrix outputs are laid out, see matrix3_layout.
+  matrix3_layout matrix3 = matrix3_layout::packed;
+  /// Protocol only (case files): how 3x3 matrix inputs are laid out (a library may take a
+  /// mat4 and return a mat3, as gl-matrix's normalFromMat4 and three.js's getNormalMatrix do).
+  matrix3_layout matrix3_input = matrix3_layout::packed;
 };
 
 }  // namespace shadowproof

@@ -15,14 +15,14 @@ namespace shadowproof {
 /// the operation's exact template over rationals under the conventions that change the exact
 /// values (light sign, depth range, clamping, symmetric volumes); storage order, vector side and
 /// scale are the grader's business and do not appear here.
-struct exact_answer {
+struct exact_result {
   std::vector<rational> values;   ///< 0 where the output does not exist
   std::vector<bool> defined;      ///< false where the output does not exist (a division by 0)
   std::optional<point_class> cls;  ///< shadow-point: the exact class of the point
 };
 
 /// The exact answer for c under conv.
-exact_answer exact_answer_of(const test_case& c, const conventions& conv);
+exact_result exact_result_of(const test_case& c, const conventions& conv);
 
 /// The exact answer correctly rounded to c's type (round to nearest, ties to even, an exact 0
 /// as +0; ±Inf when it overflows) in the layout `conv` declares (storage order, vector side),

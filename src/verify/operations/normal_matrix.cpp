@@ -88,6 +88,8 @@ operation_spec make() {
   s.sensitivity = normal_matrix_sensitivity;
   s.stable_constant = 14;
   s.sentinel_outputs = matrix3_sentinels;
+  s.fast_f32 = fast_normal_matrix_f32;
+  s.fast_f64 = fast_normal_matrix_f64;
   s.reproducer = reproducer;
   s.invalid = never_invalid;
   return s;

@@ -31,6 +31,8 @@ operation_spec make() {
   SHADOWPROOF_EXACT_TEMPLATE(s, exact);
   s.stable_constant = 6;
   s.sentinel_outputs = matrix_sentinels;
+  s.fast_f32 = fast_ortho_f32;
+  s.fast_f64 = fast_ortho_f64;
   s.reproducer = reproducer;
   s.invalid = never_invalid;
   return s;
