@@ -2,6 +2,7 @@
 // grades every output against the exact answer for the very same float inputs.
 #include <unistd.h>
 
+#include <chrono>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -11,6 +12,7 @@
 #include <sstream>
 
 #include "command.h"
+#include "jobs_option.h"
 #include "shadowproof/core/error.h"
 #include "shadowproof/core/io.h"
 #include "shadowproof/core/svg.h"
@@ -20,6 +22,7 @@
 #include "shadowproof/impls/builtin.h"
 #include "shadowproof/verify/cases.h"
 #include "shadowproof/verify/grade.h"
+#include "shadowproof/verify/parallel.h"
 #include "shadowproof/verify/report.h"
 #include "verify_print.h"
 
@@ -35,6 +38,7 @@ struct check_options {
   bool list = false;
   std::string svg;
   std::optional<std::uint64_t> max_ulps;
+  unsigned jobs = 0;  // 0: default_jobs()
 };
 
 // One implementation's cases and grades.
@@ -140,11 +144,14 @@ int run_check(const check_options& o) {
 
   std::vector<impl_run> runs;
   oracle_counters counters;
+  double grading_seconds = 0;  // running the implementations and grading, not generating cases
   {
     progress_bar bar(chosen.size());
     for (const implementation* impl : chosen) {
       impl_run r{impl, generate_cases(impl->op, impl->type, o.cases, o.seed, std::nullopt, impl->conv), {}};
-      r.grades = run_and_grade(*impl, r.cases, oracle_mode::filtered, &counters);
+      const auto start = std::chrono::steady_clock::now();
+      r.grades = run_and_grade_in_parallel(*impl, r.cases, o.jobs, oracle_mode::filtered, &counters);
+      grading_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       runs.push_back(std::move(r));
       bar.step(impl->name);
     }
@@ -198,7 +205,8 @@ int run_check(const check_options& o) {
     print_worst(std::cout, r.impl->name, s.worst[0], r.cases.at(s.worst[0].id), r.impl->conv);
   }
   std::cout << "\nOracle: " << counters.decided_by_intervals << " cases decided by interval arithmetic, "
-            << counters.fell_back_to_rationals << " by exact rationals.\n";
+            << counters.fell_back_to_rationals << " by exact rationals; graded at "
+            << throughput_text(static_cast<double>(o.cases * runs.size()), grading_seconds) << ".\n";
   if (!o.svg.empty()) std::cout << "Plot written to " << o.svg << '\n';
   if (o.max_ulps)
     std::cout << (exceeded ? "FAIL" : "PASS") << ": threshold --max-ulps " << *o.max_ulps
@@ -220,6 +228,7 @@ const command_registration reg{command{
       app.add_option("--max-ulps", o->max_ulps,
                      "exit with 1 when an output is more than this many ulps off, or non-finite where the "
                      "exact value is finite");
+      add_jobs_option(app, o->jobs);
       app.add_flag("--list", o->list, "print the registered implementation names, one per line");
       return [o] { return run_check(*o); };
     }}};

@@ -5,11 +5,13 @@
 #include <map>
 
 #include "command.h"
+#include "jobs_option.h"
 #include "shadowproof/core/error.h"
 #include "shadowproof/verify/operation.h"
 #include "shadowproof/verify/conventions.h"
 #include "shadowproof/verify/cases.h"
 #include "shadowproof/verify/grade.h"
+#include "shadowproof/verify/parallel.h"
 #include "shadowproof/verify/report.h"
 #include "shadowproof/verify/protocol.h"
 #include "verify_print.h"
@@ -27,6 +29,7 @@ struct grade_options {
   bool json = false;
   std::optional<std::uint64_t> max_ulps;
   std::vector<std::string> conventions;  // name=value
+  unsigned jobs = 0;  // 0: default_jobs()
 };
 
 std::vector<std::string> read_lines(const std::string& path, const char* what) {
@@ -71,9 +74,9 @@ int run_grade(const grade_options& o) {
                                             std::to_string(cases.back().id) + " appears twice");
   }
   const auto output_lines = read_lines(o.outputs_path, "outputs");
-  std::vector<case_grade> grades;
   std::map<std::uint64_t, bool> seen;
-  oracle_counters counters;
+  std::vector<std::size_t> graded_case;  // per output line, the index of its case
+  std::vector<output_line> outputs;
   for (std::size_t i = 0; i < output_lines.size(); ++i) {
     // The id decides which case (and so which type and output count) the line belongs to.
     std::uint64_t id = 0;
@@ -92,11 +95,18 @@ int run_grade(const grade_options& o) {
       throw error(errc::grade_duplicate_id, o.outputs_path + " line " + std::to_string(i + 1) + ": id " +
                                             std::to_string(id) + " graded twice");
     seen[id] = true;
-    const test_case& c = cases[it->second];
-    const conventions& cc = case_conv[it->second];
-    const output_line out = parse_output_line(output_lines[i], i + 1, c, cc);
-    grades.push_back(grade_case(c, cc, out.values.data(), oracle_mode::filtered, &counters));
+    graded_case.push_back(it->second);
+    outputs.push_back(parse_output_line(output_lines[i], i + 1, cases[it->second], case_conv[it->second]));
   }
+  // Every line read and checked first (a bad line is reported the same way for any --jobs),
+  // then graded on several threads, each grade in its line's place.
+  std::vector<case_grade> grades(outputs.size());
+  for_each_slice(grades.size(), o.jobs, 256, [&](std::size_t first, std::size_t end) {
+    for (std::size_t i = first; i < end; ++i) {
+      const std::size_t k = graded_case[i];
+      grades[i] = grade_case(cases[k], case_conv[k], outputs[i].values.data());
+    }
+  });
   const std::size_t missing = cases.size() - grades.size();
 
   auto lookup = [&](std::uint64_t id) -> const test_case& { return cases[index.at(id)]; };
@@ -160,6 +170,7 @@ const command_registration reg{command{
                      "name=value, repeatable (docs/protocol.md): handedness=left, angle=degrees, matrix3=mat4, ...; "
                      "a case line's own \"conventions\" override the command line's for that case");
       app.add_flag("--json", o->json, "print one JSON object");
+      add_jobs_option(app, o->jobs);
       app.add_option("--max-ulps", o->max_ulps, "exit with 1 when an output is more than this many ulps off, "
                                                 "or non-finite where the exact value is finite");
       return [o] { return run_grade(*o); };
