@@ -124,6 +124,20 @@ TEST_CASE("batch references are the correctly rounded exact outputs, whichever p
   }
 }
 
+// The camera builders have no batch filter: those with irrational values go to the generic
+// oracle, the width/height builders to the box kernels one case at a time.
+bool has_batch_filter(operation op) {
+  switch (op) {
+    case operation::perspective_fov:
+    case operation::perspective_fov_infinite:
+    case operation::look_at:
+    case operation::target_to:
+    case operation::ortho_size:
+    case operation::perspective_size: return false;
+    default: return true;
+  }
+}
+
 TEST_CASE("the AVX2 filter and the generic filter give the same references bit for bit", "[batch]") {
   if (!avx2_batch_available()) {
     WARN("this processor has no AVX2 and FMA: only the generic filter runs here");
@@ -148,7 +162,7 @@ TEST_CASE("the AVX2 filter and the generic filter give the same references bit f
         // elsewhere both filters decide exactly the same cases.
         if (i < batch.count / 4 * 4) REQUIRE((generic.decided_by[i] == 0) == (avx2.decided_by[i] == 0));
         filtered_by_both += generic.decided_by[i] == 0 && avx2.decided_by[i] == 0;
-        ++compared;
+        compared += has_batch_filter(impl.op);
       }
     }
   }
@@ -159,6 +173,7 @@ TEST_CASE("the AVX2 filter and the generic filter give the same references bit f
 TEST_CASE("the batch filter decides nearly every regular case", "[batch]") {
   for (const implementation& impl : builtin_implementations()) {
     if (impl.conv.homogeneous || impl.conv.normalises_plane) continue;
+    if (!has_batch_filter(impl.op)) continue;
     const auto cases = generate_cases(impl.op, impl.type, 400, 3, input_class::regular, impl.conv);
     const case_batch batch = make_batch(cases);
     batch_references refs;

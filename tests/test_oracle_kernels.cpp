@@ -128,7 +128,7 @@ TEST_CASE("error-free transformations stay exact on hard inputs, so a contracted
     REQUIRE(significant_bits(hi) <= 26);
     REQUIRE(significant_bits(lo) <= 26);
     // Products of halves are exact in double only because each half has at most 26 bits.
-    REQUIRE(exact_value(hi * hi) == exact_value(hi) * exact_value(hi));
+    if (std::fabs(x) < 0x1p+500 && std::fabs(x) > 0x1p-400) REQUIRE(exact_value(hi * hi) == exact_value(hi) * exact_value(hi));
   }
   for (double a : hard)
     for (double b : hard) {
@@ -319,6 +319,8 @@ std::vector<conventions> conventions_for(operation op) {
     case operation::ortho:
     case operation::frustum:
     case operation::perspective:
+    case operation::ortho_size:
+    case operation::perspective_size:
       all.clear();
       for (depth_convention d : {depth_convention::gl, depth_convention::d3d, depth_convention::reverse_z})
         for (bool symmetric : {false, true}) {
@@ -329,7 +331,7 @@ std::vector<conventions> conventions_for(operation op) {
           all.push_back(c);
         }
       break;
-    case operation::normal_matrix: break;
+    default: break;  // normal-matrix, and the camera builders (no dedicated kernel yet)
   }
   return all;
 }
@@ -361,8 +363,15 @@ void require_kernel_agrees(const detail::operation_spec& spec, const test_case& 
   }
 }
 
+// The operations with dedicated kernels: those whose exact values are rational functions of the
+// inputs. The camera builders with tangents and square roots go to the generic
+// interval-then-rational oracle.
+const operation kernel_operations[] = {operation::shadow_matrix, operation::shadow_point, operation::reflection_matrix,
+                                       operation::ortho,         operation::frustum,      operation::normal_matrix,
+                                       operation::perspective,   operation::ortho_size,   operation::perspective_size};
+
 void check_every_kernel(std::size_t per_class, std::uint64_t seed) {
-  for (operation op : all_operations()) {
+  for (operation op : kernel_operations) {
     const detail::operation_spec& spec = detail::spec_of(op);
     for (scalar_type type : {scalar_type::f32, scalar_type::f64}) {
       kernel_tally tally;

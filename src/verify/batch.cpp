@@ -3,6 +3,8 @@
 // declines; then the grades, column by column.
 #include "shadowproof/verify/batch.h"
 
+#include <algorithm>
+
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -351,7 +353,10 @@ void compute_references_range(const case_batch& batch, const conventions& conv, 
   const batch_filter filter = use_avx2 ? avx2_batch_filter(batch.op, batch.type) : generic_batch_filter(batch.op, batch.type);
   std::uint8_t* decided = out.decided_by.data() + first;  // 1 = decided, turned into decided_by below
   const bool point = batch.op == operation::shadow_point;
-  filter(in_columns, end - first, conv, {out_columns, decided, point ? out.point_class.data() + first : nullptr});
+  // Operations without a filter (the camera builders with irrational values) decide nothing
+  // here: every case goes on to the generic oracle below.
+  if (filter) filter(in_columns, end - first, conv, {out_columns, decided, point ? out.point_class.data() + first : nullptr});
+  else std::fill(decided, decided + (end - first), std::uint8_t{0});
   const fast_kernel kernel = f32 ? spec.fast_f32 : spec.fast_f64;
   double in[16];
   fast_reference r;
