@@ -329,6 +329,9 @@ std::vector<conventions> conventions_for(operation op) {
           c.depth = d;
           c.symmetric_view = symmetric;
           all.push_back(c);
+          // Left-handed: the same matrix with column 2 negated (handedness.h).
+          c.hand = handedness::left;
+          all.push_back(c);
         }
       break;
     default: break;  // normal-matrix, and the camera builders (no dedicated kernel yet)

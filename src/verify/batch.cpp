@@ -350,11 +350,15 @@ void compute_references_range(const case_batch& batch, const conventions& conv, 
   for (std::size_t c = 0; c < sig.input_count; ++c) in_columns[c] = batch.inputs.data() + c * count + first;
   for (std::size_t c = 0; c < n; ++c) out_columns[c] = out.values.data() + layout_index(c, k, conv) * count + first;
   const bool use_avx2 = path != batch_path::generic && avx2_batch_available();
-  const batch_filter filter = use_avx2 ? avx2_batch_filter(batch.op, batch.type) : generic_batch_filter(batch.op, batch.type);
+  // The batch filters write right-handed matrices: left-handed cases go to the kernel for one
+  // case, which negates column 2.
+  const batch_filter filter = conv.hand == handedness::left ? nullptr
+                              : use_avx2 ? avx2_batch_filter(batch.op, batch.type)
+                                         : generic_batch_filter(batch.op, batch.type);
   std::uint8_t* decided = out.decided_by.data() + first;  // 1 = decided, turned into decided_by below
   const bool point = batch.op == operation::shadow_point;
-  // Operations without a filter (the camera builders with irrational values) decide nothing
-  // here: every case goes on to the generic oracle below.
+  // Without a filter (the camera builders, left-handed cases) nothing is decided here: every
+  // case goes on to the kernel for one case or the generic oracle below.
   if (filter) filter(in_columns, end - first, conv, {out_columns, decided, point ? out.point_class.data() + first : nullptr});
   else std::fill(decided, decided + (end - first), std::uint8_t{0});
   const fast_kernel kernel = f32 ? spec.fast_f32 : spec.fast_f64;
