@@ -4,7 +4,6 @@
 #include "shadowproof/verify/batch.h"
 
 #include <algorithm>
-
 #include <cmath>
 #include <cstring>
 #include <limits>
