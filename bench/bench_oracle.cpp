@@ -33,6 +33,8 @@
 #include <string>
 #include <vector>
 
+#include "shadowproof/constructions/handedness.h"
+#include "shadowproof/constructions/look_at.h"
 #include "shadowproof/constructions/project.h"
 #include "shadowproof/impls/builtin.h"
 #include "shadowproof/verify/batch.h"
@@ -60,15 +62,68 @@ void library_ortho(const double* in, double* out) {
   for (std::size_t i = 0; i < 16; ++i) out[i] = M(i / 4, i % 4);
 }
 
+// The camera builders registered in f32 only, written here in double as the textbook f32 ones
+// are (src/impls/reference_camera.cpp): c = 1/tan(fovy/2); the placement is the look-at
+// rotation transposed with the eye; the width/height builders are the box ones at ±w/2, ±h/2
+// (halving is exact).
+void library_perspective_fov_infinite_f64(const double* in, double* out) {
+  const double c = 1 / std::tan(in[0] / 2), n = in[2];
+  for (std::size_t i = 0; i < 16; ++i) out[i] = 0;
+  out[0] = c / in[1];
+  out[5] = c;
+  out[10] = -1;
+  out[11] = -2 * n;
+  out[14] = -1;
+}
+
+void library_target_to_f64(const double* in, double* out) {
+  const vec3<double> eye{in[0], in[1], in[2]}, target{in[3], in[4], in[5]}, up{in[6], in[7], in[8]};
+  const mat4<double> v = look_at_float(eye, target, up, handedness::right);
+  for (std::size_t r = 0; r < 4; ++r)
+    for (std::size_t c = 0; c < 4; ++c) out[4 * r + c] = r < 3 && c < 3 ? v(c, r) : 0.0;
+  for (std::size_t r = 0; r < 3; ++r) out[4 * r + 3] = eye[r];
+  out[15] = 1;
+}
+
+template <bool perspective>
+void library_view_size_f64(const double* in, double* out) {
+  const double w = in[0] / 2, h = in[1] / 2;
+  const mat4<double> M = perspective ? frustum<double>(-w, w, -h, h, in[2], in[3], depth_convention::gl)
+                                     : orthographic<double>(-w, w, -h, h, in[2], in[3], depth_convention::gl);
+  for (std::size_t i = 0; i < 16; ++i) out[i] = M(i / 4, i % 4);
+}
+
 implementation representative(operation op, scalar_type type) {
-  static const char* const preferred[] = {"seed000-general", "eigen-intersection", "reflect-divide",
-                                          "ortho-closed-form", "frustum-closed-form", "normal-inverse-transpose",
-                                          "perspective-closed-form"};
-  const std::string name = std::string(preferred[static_cast<int>(op)]) + "-" + std::string(to_string(type));
+  static const std::pair<operation, const char*> preferred[] = {
+      {operation::shadow_matrix, "seed000-general"},      {operation::shadow_point, "eigen-intersection"},
+      {operation::reflection_matrix, "reflect-divide"},   {operation::ortho, "ortho-closed-form"},
+      {operation::frustum, "frustum-closed-form"},        {operation::normal_matrix, "normal-inverse-transpose"},
+      {operation::perspective, "perspective-closed-form"}};
+  std::string stem = "textbook-" + std::string(to_string(op));  // the camera operations
+  for (const auto& [o, name] : preferred)
+    if (o == op) stem = name;
+  const std::string name = stem + "-" + std::string(to_string(type));
   for (const implementation& impl : builtin_implementations())
     if (impl.name == name) return impl;
-  if (op == operation::ortho && type == scalar_type::f64)
-    return {"library-ortho-f64", op, type, conventions{}, "orthographic<double> (project.h)", library_ortho<double>};
+  if (type == scalar_type::f64) {
+    const conventions c;
+    switch (op) {
+      case operation::ortho:
+        return {"library-ortho-f64", op, type, c, "orthographic<double> (project.h)", library_ortho<double>};
+      case operation::perspective_fov_infinite:
+        return {"library-perspective-fov-infinite-f64", op, type, c, "c = 1/tan(fovy/2), double",
+                library_perspective_fov_infinite_f64};
+      case operation::target_to:
+        return {"library-target-to-f64", op, type, c, "look_at_float<double> transposed", library_target_to_f64};
+      case operation::ortho_size:
+        return {"library-ortho-size-f64", op, type, c, "orthographic<double> at ±w/2, ±h/2",
+                library_view_size_f64<false>};
+      case operation::perspective_size:
+        return {"library-perspective-size-f64", op, type, c, "frustum<double> at ±w/2, ±h/2",
+                library_view_size_f64<true>};
+      default: break;
+    }
+  }
   throw std::runtime_error("no implementation for " + name);
 }
 

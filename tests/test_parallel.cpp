@@ -2,7 +2,10 @@
 // same for any number of threads, and the same as one thread's grade_case.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cstring>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "shadowproof/impls/builtin.h"
@@ -117,5 +120,37 @@ TEST_CASE("the batch grader gives the same columns on any number of threads", "[
       CHECK(counters.decided_by_intervals == one_thread.decided_by_intervals);
       CHECK(counters.fell_back_to_rationals == one_thread.fell_back_to_rationals);
     }
+  }
+}
+
+TEST_CASE("for_each_slice covers every index once and rethrows the lowest failing slice's exception",
+          "[parallel]") {
+  const std::size_t count = 1000, slice = 7;
+  for (unsigned jobs : {1u, 2u, 3u, 8u}) {
+    // Catch2 assertions are not thread-safe: the workers only write their own indices.
+    std::vector<int> visits(count, 0);
+    std::vector<char> bad_bounds(count, 0);
+    for_each_slice(count, jobs, slice, [&](std::size_t first, std::size_t end) {
+      const bool bad = first % slice != 0 || end != std::min(count, first + slice);
+      for (std::size_t i = first; i < end; ++i) {
+        ++visits[i];
+        bad_bounds[i] = bad;
+      }
+    });
+    REQUIRE(std::count(visits.begin(), visits.end(), 1) == static_cast<long>(count));
+    REQUIRE(std::count(bad_bounds.begin(), bad_bounds.end(), 1) == 0);
+
+    // Indices 400 and 900 fail; a loop in index order meets 400 first, so every run must
+    // report 400 whichever thread got there first.
+    std::string thrown;
+    try {
+      for_each_slice(count, jobs, slice, [&](std::size_t first, std::size_t end) {
+        for (std::size_t i = first; i < end; ++i)
+          if (i == 400 || i == 900) throw std::runtime_error(std::to_string(i));
+      });
+    } catch (const std::runtime_error& e) {
+      thrown = e.what();
+    }
+    REQUIRE(thrown == "400");
   }
 }

@@ -752,12 +752,15 @@ std::vector<conventions> kernel_conventions(operation op) {
     case operation::shadow_point: return {conventions{}, along_rays, clamped};
     case operation::ortho:
     case operation::frustum:
-    case operation::perspective: {
+    case operation::perspective:
+    case operation::ortho_size:
+    case operation::perspective_size: {
       std::vector<conventions> all;
       for (depth_convention d : {depth_convention::gl, depth_convention::d3d, depth_convention::reverse_z}) {
         conventions c = column_major;
         c.depth = d;
         c.symmetric_view = d == depth_convention::d3d && op != operation::perspective;
+        c.hand = d == depth_convention::gl ? handedness::left : handedness::right;
         all.push_back(c);
       }
       return all;

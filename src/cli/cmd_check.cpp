@@ -2,6 +2,7 @@
 // grades every output against the exact answer for the very same float inputs.
 #include <unistd.h>
 
+#include <chrono>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -11,6 +12,7 @@
 #include <sstream>
 
 #include "command.h"
+#include "jobs_option.h"
 #include "shadowproof/core/error.h"
 #include "shadowproof/core/io.h"
 #include "shadowproof/core/svg.h"
@@ -20,6 +22,7 @@
 #include "shadowproof/impls/builtin.h"
 #include "shadowproof/verify/cases.h"
 #include "shadowproof/verify/grade.h"
+#include "shadowproof/verify/parallel.h"
 #include "shadowproof/verify/protocol.h"
 #include "shadowproof/verify/report.h"
 #include "verify_print.h"
@@ -40,6 +43,7 @@ struct check_options {
   std::string input;
   std::optional<std::uint64_t> max_ulps;
   std::string fail_on;
+  unsigned jobs = 0;  // 0: default_jobs()
 };
 
 // One implementation's cases and grades.
@@ -211,12 +215,17 @@ int run_check(const check_options& o) {
   }
   std::vector<impl_run> runs;
   oracle_counters counters;
+  double grading_seconds = 0;  // running the implementations and grading, not generating cases
+  std::size_t graded = 0;
   {
     progress_bar bar(chosen.size());
     for (const implementation* impl : chosen) {
       impl_run r{impl, given.empty() ? generate_cases(impl->op, impl->type, o.cases, o.seed, class_filter, impl->conv)
                                      : given, {}};
-      r.grades = run_and_grade(*impl, r.cases, oracle_mode::filtered, &counters);
+      const auto start = std::chrono::steady_clock::now();
+      r.grades = run_and_grade_in_parallel(*impl, r.cases, o.jobs, oracle_mode::filtered, &counters);
+      grading_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      graded += r.cases.size();
       runs.push_back(std::move(r));
       bar.step(impl->name);
     }
@@ -289,7 +298,8 @@ int run_check(const check_options& o) {
     print_examples(std::cout, r.impl->name, summaries[i], lookup, conv_of, style);
   }
   std::cout << "\nOracle: " << counters.decided_by_intervals << " cases decided by interval arithmetic, "
-            << counters.fell_back_to_rationals << " by exact rationals.\n";
+            << counters.fell_back_to_rationals << " by exact rationals; graded at "
+            << throughput_text(static_cast<double>(graded), grading_seconds) << ".\n";
   if (!o.svg.empty()) std::cout << "Plot written to " << o.svg << '\n';
   if (o.max_ulps)
     std::cout << (ulps_failed ? "FAIL" : "PASS") << ": --max-ulps " << *o.max_ulps
@@ -321,6 +331,7 @@ const command_registration reg{command{
       app.add_option("--fail-on", o->fail_on,
                      "exit with 1 when a case is at or past this verdict: exact, faithful, stable, unstable, "
                      "range, wrong, nonfinite, garbage");
+      add_jobs_option(app, o->jobs);
       app.add_flag("--list", o->list, "print the registered implementation names, one per line");
       return [o] { return run_check(*o); };
     }}};

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "command.h"
+#include "jobs_option.h"
 #include "shadowproof/fuzz/differential.h"
 #include "shadowproof/core/error.h"
 #include "shadowproof/verify/implementation.h"
@@ -30,6 +31,7 @@ struct fuzz_options {
   std::string out_dir;
   bool json = false;
   bool no_metamorphic = false;
+  unsigned jobs = 0;  // 0: default_jobs()
 };
 
 
@@ -119,6 +121,7 @@ int run_fuzz_command(const fuzz_options& o) {
   s.seed = o.seed;
   s.ulps_threshold = o.max_ulps;
   s.metamorphic = !o.no_metamorphic;
+  s.jobs = o.jobs;
   if (!o.out_dir.empty()) {  // fail before a long run, not after it
     std::error_code ec;
     std::filesystem::create_directories(o.out_dir, ec);
@@ -159,6 +162,7 @@ const command_registration registration{command{
       app.add_option("--out", o->out_dir, "write each shrunk case (.jsonl) and Catch2 test (.cpp) here");
       app.add_flag("--json", o->json, "print the report as JSON");
       app.add_flag("--no-metamorphic", o->no_metamorphic, "skip the metamorphic relations");
+      add_jobs_option(app, o->jobs);
       return [o] { return run_fuzz_command(*o); };
     }}};
 

@@ -7,10 +7,12 @@
 #include <memory>
 
 #include "command.h"
+#include "jobs_option.h"
 #include "shadowproof/core/error.h"
 #include "shadowproof/verify/cases.h"
 #include "shadowproof/verify/conventions.h"
 #include "shadowproof/verify/grade.h"
+#include "shadowproof/verify/parallel.h"
 #include "shadowproof/verify/operation.h"
 #include "shadowproof/verify/protocol.h"
 #include "shadowproof/verify/report.h"
@@ -35,6 +37,7 @@ struct grade_options {
   std::optional<std::uint64_t> max_ulps;
   std::string fail_on;
   std::vector<std::string> conventions;  // name=value
+  unsigned jobs = 0;  // 0: default_jobs()
 };
 
 std::vector<std::string> read_lines(const std::string& path, const char* what) {
@@ -121,7 +124,8 @@ int run_grade(const grade_options& o) {
   if (output_lines.empty())
     throw error(errc::grade_empty, "the outputs file '" + o.outputs_path + "' has no line: none of the " +
                                    std::to_string(cases.size()) + " cases was answered");
-  std::vector<case_grade> grades;
+  std::vector<std::size_t> graded_case;  // per output line, the index of its case
+  std::vector<output_line> outputs;
   std::vector<bool> seen(cases.size(), false);
   oracle_counters counters;
   for (std::size_t i = 0; i < output_lines.size(); ++i) {
@@ -142,10 +146,25 @@ int run_grade(const grade_options& o) {
       throw error(errc::grade_duplicate_id, o.outputs_path + " line " + std::to_string(i + 1) + ": id " +
                                             std::to_string(id) + " graded twice");
     seen[it->second] = true;
-    const test_case& c = cases[it->second];
-    const conventions& cc = case_conv[it->second];
-    const output_line out = parse_output_line(output_lines[i], i + 1, c, cc);
-    grades.push_back(grade_case(c, cc, out.values.data(), oracle_mode::filtered, &counters));
+    graded_case.push_back(it->second);
+    outputs.push_back(parse_output_line(output_lines[i], i + 1, cases[it->second], case_conv[it->second]));
+  }
+  // Every line read and checked first (a bad line is reported the same way for any --jobs),
+  // then graded on several threads, each grade in its line's place and each slice's counters
+  // in the slice's own place, summed in order.
+  std::vector<case_grade> grades(outputs.size());
+  const std::size_t slice = 256;
+  std::vector<oracle_counters> slice_counters((grades.size() + slice - 1) / slice);
+  for_each_slice(grades.size(), o.jobs, slice, [&](std::size_t first, std::size_t end) {
+    for (std::size_t i = first; i < end; ++i) {
+      const std::size_t k = graded_case[i];
+      grades[i] = grade_case(cases[k], case_conv[k], outputs[i].values.data(), oracle_mode::filtered,
+                             &slice_counters[first / slice]);
+    }
+  });
+  for (const oracle_counters& c : slice_counters) {
+    counters.decided_by_intervals += c.decided_by_intervals;
+    counters.fell_back_to_rationals += c.fell_back_to_rationals;
   }
   std::vector<std::uint64_t> missing;
   for (std::size_t i = 0; i < cases.size(); ++i)
@@ -244,6 +263,7 @@ const command_registration reg{command{
                      "name=value, repeatable (docs/protocol.md): handedness=left, angle=degrees, matrix3=mat4, ...; "
                      "a case line's own \"conventions\" override the command line's for that case");
       app.add_flag("--json", o->json, "print one JSON object (every field, every case's verdict)");
+      add_jobs_option(app, o->jobs);
       app.add_flag("--wide", o->wide, "show a worst case per verdict, with every output and the inputs");
       app.add_option("--max-ulps", o->max_ulps, "exit with 1 when an output is more than this many ulps off, or NaN/Inf "
                                                 "where the exact value exists, or a case is garbage or misclassified");

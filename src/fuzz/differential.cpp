@@ -11,6 +11,7 @@
 #include "shadowproof/core/error.h"
 #include "shadowproof/core/number.h"
 #include "shadowproof/fuzz/shrink.h"
+#include "shadowproof/verify/parallel.h"
 #include "shadowproof/core/ulp.h"
 
 namespace shadowproof {
@@ -284,17 +285,10 @@ fuzz_report run_fuzz(const implementation& impl, const fuzz_settings& settings,
     return generate_shadow_case<double>(src, req);
   };
 
-  for (std::size_t n = 0; n < case_limit; ++n) {
-    if (settings.seconds && (n % 64 == 0) && elapsed() >= *settings.seconds) break;
-    if (progress && (n % 64 == 0) && elapsed() - last_progress >= 1.0) {
-      last_progress = elapsed();
-      progress(n, report.failures.size());
-    }
-    const auto g = generate();
-    const test_case c = make_fuzz_case(g, impl, n);
+  // Counts one case's failures and records (shrunk) the first of each kind and family.
+  auto record_case = [&](const generated_case<double>& g, const test_case& c, const case_grade& grade,
+                         const std::vector<std::optional<std::uint64_t>>& violation) {
     ++report.cases;
-    const auto out = run(impl, c);
-    const case_grade grade = grade_case(c, impl.conv, out.data());
     const std::string family = base_family(g.family);
 
     // Shrinks the case while `fails_on` holds for the simpler inputs and records the failure.
@@ -342,8 +336,9 @@ fuzz_report run_fuzz(const implementation& impl, const fuzz_settings& settings,
       });
     }
 
-    for (const auto& relation : relations) {
-      const auto v = metamorphic_violation(impl, c, relation, settings.ulps_threshold);
+    for (std::size_t r = 0; r < relations.size(); ++r) {
+      const std::string& relation = relations[r];
+      const auto& v = violation[r];
       if (!v) continue;
       report.metamorphic_max_ulps[relation] = std::max(report.metamorphic_max_ulps[relation], *v);
       ++report.failing_cases["metamorphic"];
@@ -353,6 +348,41 @@ fuzz_report run_fuzz(const implementation& impl, const fuzz_settings& settings,
                return metamorphic_violation(impl, t, relation, settings.ulps_threshold).has_value();
              });
     }
+  };
+
+  // Cases go in chunks: generated in order from the one random stream, run and graded (with
+  // every metamorphic relation) on settings.jobs threads, then read in order, so the counts,
+  // the failures kept and their shrinking are those of a loop over the cases one by one.
+  const std::size_t chunk = 1024;
+  std::vector<generated_case<double>> generated;
+  std::vector<test_case> cases;
+  std::vector<case_grade> grades;
+  std::vector<std::vector<std::optional<std::uint64_t>>> violations;  // per case, per relation
+  for (std::size_t first = 0; first < case_limit;) {
+    if (settings.seconds && elapsed() >= *settings.seconds) break;
+    if (progress && elapsed() - last_progress >= 1.0) {
+      last_progress = elapsed();
+      progress(first, report.failures.size());
+    }
+    const std::size_t count = std::min(chunk, case_limit - first);
+    generated.clear();
+    cases.clear();
+    for (std::size_t k = 0; k < count; ++k) {
+      generated.push_back(generate());
+      cases.push_back(make_fuzz_case(generated.back(), impl, first + k));
+    }
+    grades.assign(count, case_grade{});
+    violations.assign(count, {});
+    for_each_slice(count, settings.jobs, 64, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t k = begin; k < end; ++k) {
+        const auto out = run(impl, cases[k]);
+        grades[k] = grade_case(cases[k], impl.conv, out.data());
+        for (const auto& relation : relations)
+          violations[k].push_back(metamorphic_violation(impl, cases[k], relation, settings.ulps_threshold));
+      }
+    });
+    for (std::size_t k = 0; k < count; ++k) record_case(generated[k], cases[k], grades[k], violations[k]);
+    first += count;
   }
   if (progress) progress(report.cases, report.failures.size());
   return report;

@@ -53,6 +53,10 @@ bool fast_normal_matrix_f32(const double* inputs, const conventions& conv, fast_
 bool fast_normal_matrix_f64(const double* inputs, const conventions& conv, fast_reference& out);
 bool fast_perspective_f32(const double* inputs, const conventions& conv, fast_reference& out);
 bool fast_perspective_f64(const double* inputs, const conventions& conv, fast_reference& out);
+bool fast_ortho_size_f32(const double* inputs, const conventions& conv, fast_reference& out);
+bool fast_ortho_size_f64(const double* inputs, const conventions& conv, fast_reference& out);
+bool fast_perspective_size_f32(const double* inputs, const conventions& conv, fast_reference& out);
+bool fast_perspective_size_f64(const double* inputs, const conventions& conv, fast_reference& out);
 
 /// For tests: when true, every kernel skips its filter stage and decides with exact expansions
 /// alone, so that the exact stage is checked on every case, not only where the filter gives up.

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <atomic>
 #include <exception>
+#include <functional>
 #include <mutex>
 #include <thread>
 
@@ -16,8 +17,10 @@ namespace shadowproof {
 namespace {
 
 // Calls work(first, end, counters) for consecutive slices of [0, count) on `jobs` threads and
-// adds every thread's counters to `total`. The first exception a slice throws is rethrown here
-// once every thread has stopped.
+// adds every thread's counters to `total`. When slices throw, the exception of the lowest
+// slice is rethrown once every thread has stopped: slices are taken in increasing order and
+// every slice taken before the failure runs to its end, so that is the exception a loop over
+// the cases in order would have thrown, whatever the number of threads.
 template <class Work>
 void for_slices(std::size_t count, unsigned jobs, std::size_t slice, oracle_counters* total, Work work) {
   if (jobs == 0) jobs = default_jobs();
@@ -25,14 +28,19 @@ void for_slices(std::size_t count, unsigned jobs, std::size_t slice, oracle_coun
   jobs = static_cast<unsigned>(std::min<std::size_t>(jobs, std::max<std::size_t>(slices, 1)));
   std::atomic<std::size_t> next{0};
   std::exception_ptr failure;
+  std::size_t failed_slice = slices;
   std::mutex lock;
   auto run = [&] {
     oracle_counters mine;
+    std::size_t s = 0;
     try {
-      for (std::size_t s; (s = next.fetch_add(1)) < slices;) work(s * slice, std::min(count, (s + 1) * slice), mine);
+      while ((s = next.fetch_add(1)) < slices) work(s * slice, std::min(count, (s + 1) * slice), mine);
     } catch (...) {
       std::lock_guard<std::mutex> guard(lock);
-      if (!failure) failure = std::current_exception();
+      if (s < failed_slice) {
+        failure = std::current_exception();
+        failed_slice = s;
+      }
       next = slices;  // the others stop after their current slice
     }
     std::lock_guard<std::mutex> guard(lock);
@@ -53,6 +61,13 @@ void for_slices(std::size_t count, unsigned jobs, std::size_t slice, oracle_coun
 unsigned default_jobs() {
   const unsigned n = std::thread::hardware_concurrency();
   return n == 0 ? 1 : n;
+}
+
+void for_each_slice(std::size_t count, unsigned jobs, std::size_t slice,
+                    const std::function<void(std::size_t, std::size_t)>& work) {
+  if (slice == 0) throw internal_error("for_each_slice: a slice holds at least one index");
+  for_slices(count, jobs, slice, nullptr,
+             [&](std::size_t first, std::size_t end, oracle_counters&) { work(first, end); });
 }
 
 std::vector<case_grade> grade_in_parallel(const std::vector<test_case>& cases, const conventions& conv,

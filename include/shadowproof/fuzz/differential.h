@@ -29,6 +29,9 @@ struct fuzz_settings {
   std::uint64_t ulps_threshold = 1u << 20;  ///< an output this many ulps off (or more) fails
   bool metamorphic = true;
   std::size_t shrink_budget = 4000;     ///< predicate calls per shrink
+  /// Threads that run and grade the cases (0: default_jobs()); the report is the same for
+  /// any number. More than 1 calls impl.run from several threads at once.
+  unsigned jobs = 1;
 };
 
 struct fuzz_failure {

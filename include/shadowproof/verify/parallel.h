@@ -3,6 +3,7 @@
 /// split into slices that threads take in any order, each writing its own cases' results:
 /// the grades, and the counters (sums), are identical for any number of threads.
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 #include "shadowproof/verify/batch.h"
@@ -16,6 +17,14 @@ namespace shadowproof {
 /// The number of threads to use by default: the processors this program may run on (at
 /// least 1).
 unsigned default_jobs();
+
+/// Calls work(first, end) once for each slice [first, end) = [k·slice, min(count, (k+1)·slice))
+/// of [0, count), on `jobs` threads (0 means default_jobs()), slices taken in increasing k.
+/// work must write only what belongs to its own indices. When calls throw, the exception of
+/// the lowest slice is rethrown after every thread has stopped: the one a loop in index order
+/// would have thrown first, for any jobs. Precondition: slice ≥ 1 (internal_error otherwise).
+void for_each_slice(std::size_t count, unsigned jobs, std::size_t slice,
+                    const std::function<void(std::size_t, std::size_t)>& work);
 
 /// grades[i] = grade_case(cases[i], conv, outputs[i].data(), mode) for every i, on `jobs`
 /// threads (0 means default_jobs()); counters, when given, receive the sums of every case's.

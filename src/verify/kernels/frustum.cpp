@@ -6,11 +6,11 @@
 namespace shadowproof::detail {
 
 bool fast_frustum_f32(const double* in, const conventions& conv, fast_reference& out) {
-  return fraction_kernel<frustum_form, float>(in, conv, out);
+  return with_convention_handedness(fraction_kernel<frustum_form, float>(in, conv, out), conv, out);
 }
 
 bool fast_frustum_f64(const double* in, const conventions& conv, fast_reference& out) {
-  return fraction_kernel<frustum_form, double>(in, conv, out);
+  return with_convention_handedness(fraction_kernel<frustum_form, double>(in, conv, out), conv, out);
 }
 
 }  // namespace shadowproof::detail

@@ -1,11 +1,25 @@
 #pragma once
 // What the view-volume kernels (ortho, frustum, perspective) share: the NDC depths of the near
 // and far planes, and the layout of a row that a flat extent leaves undefined.
+#include "../oracle_fast.h"
 #include "fraction_form.h"
 #include "shadowproof/verify/conventions.h"
 
 namespace shadowproof::detail {
 inline namespace SHADOWPROOF_KERNEL_TARGET {
+
+/// A left-handed convention's matrix is the right-handed one times diag(1, 1, −1, 1)
+/// (constructions/handedness.h): column 2 negated. Round-to-nearest-even commutes with
+/// negation, so negating the correctly rounded entries gives the left-handed ones; an exact 0
+/// stays +0, as the oracle writes it. Returns `decided`, for the kernels' tail call.
+inline bool with_convention_handedness(bool decided, const conventions& conv, fast_reference& out) {
+  if (decided && conv.hand == handedness::left)
+    for (std::size_t r = 0; r < 4; ++r) {
+      double& v = out.value[r * 4 + 2];
+      if (v != 0) v = -v;
+    }
+  return decided;
+}
 
 /// z_near and z_far of the depth convention as small integers (project.h's ndc_depth_range).
 struct depth_ndc {

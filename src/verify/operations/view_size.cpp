@@ -108,6 +108,8 @@ operation_spec make() {
   s.exact_rational = exact<rational, perspective>;
   s.exact_ival32 = exact<ival32, perspective>;
   s.exact_ival64 = exact<ival64, perspective>;
+  s.fast_f32 = perspective ? fast_perspective_size_f32 : fast_ortho_size_f32;
+  s.fast_f64 = perspective ? fast_perspective_size_f64 : fast_ortho_size_f64;
   s.derivatives_ival32 = exact<dual<ival32>, perspective>;
   s.derivatives_ival64 = exact<dual<ival64>, perspective>;
   s.derivatives_rational = exact<dual<rational>, perspective>;
