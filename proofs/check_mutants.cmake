@@ -1,0 +1,20 @@
+# Runs the proofs built against the deliberately changed headers (mutants.cmake) and requires that
+# they fail, and that every step named in EXPECTED is among the failures.
+# -DRUNNER=<shadowproof_proofs_mutant> -DEXPECTED="step;step;..."
+execute_process(COMMAND ${RUNNER} check RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(code EQUAL 0)
+  message(FATAL_ERROR "the proofs pass against headers with changed formulas:\n${out}${err}")
+endif()
+string(REGEX MATCHALL "  FAIL [^\n]*" failures "${out}")
+set(missing "")
+foreach(step ${EXPECTED})
+  string(FIND "${failures}" "${step}" at)
+  if(at EQUAL -1)
+    string(APPEND missing "  ${step}\n")
+  endif()
+endforeach()
+if(NOT missing STREQUAL "")
+  message(FATAL_ERROR "these steps did not fail although their formula was changed:\n${missing}\nrun output:\n${out}${err}")
+endif()
+list(LENGTH EXPECTED count)
+message(STATUS "${count} changed formulas, each caught by its proof")
