@@ -42,7 +42,7 @@ void derivation::assume_negative(const term& e) { facts.push_back({e, negative})
 
 namespace {
 step make_step(std::string name, std::string why, side lhs, side rhs, step_kind kind) {
-  step s{std::move(name), std::move(why), std::move(lhs), std::move(rhs), kind, {}, {}, {}, {}, {}};
+  step s{std::move(name), std::move(why), std::move(lhs), std::move(rhs), kind, {}, {}, {}, {}, {}, verdict::none, {}};
   return s;
 }
 }  // namespace
@@ -72,6 +72,7 @@ void derivation::sign(std::string name, std::string why, std::vector<fact> premi
 void derivation::refute(std::string name, std::string why, std::string convention, side lhs, side rhs,
                         assignment counterexample) {
   step s = make_step(std::move(name), std::move(why), std::move(lhs), std::move(rhs), step_kind::erratum);
+  s.about_source = verdict::mistake;
   s.convention = std::move(convention);
   s.counterexample = std::move(counterexample);
   steps.push_back(std::move(s));
@@ -84,6 +85,11 @@ void derivation::disprove(std::string name, std::string why, side lhs, side rhs,
 }
 
 void derivation::under(std::vector<fact> premises) { steps.back().premises = std::move(premises); }
+void derivation::mistake() { steps.back().about_source = verdict::mistake; }
+void derivation::not_a_mistake(std::string reason) {
+  steps.back().about_source = verdict::not_a_mistake;
+  steps.back().reason = std::move(reason);
+}
 
 namespace {
 

@@ -63,6 +63,10 @@ enum class step_kind {
   false_in_general,   ///< a tempting shortcut, refuted the same way
 };
 
+/// What a step says about a reference derivation: a mistake it makes, or a candidate mistake
+/// that turns out not to be one. The document lists both at the top.
+enum class verdict { none, mistake, not_a_mistake };
+
 /// A named step with the sentence that says why it holds (or where the source went wrong).
 struct step {
   std::string name;
@@ -81,6 +85,10 @@ struct step {
   std::vector<fact> premises;
   /// Sign steps: what must follow from the facts and premises (each expression's signs).
   std::vector<fact> claims;
+  /// Errata are mistakes; other steps may settle a candidate either way.
+  verdict about_source = verdict::none;
+  /// For verdict::not_a_mistake: why the candidate is not one, in a few words.
+  std::string reason;
 };
 
 /// A derivation: one file under proofs/derivations/ builds one.
@@ -117,6 +125,9 @@ struct derivation {
   void disprove(std::string name, std::string why, side lhs, side rhs, assignment counterexample);
   /// Makes the last step rest on `premises` as well (e.g. "P_y - h > 0" for one branch of code).
   void under(std::vector<fact> premises);
+  /// Marks the last step as settling a candidate mistake of the source: it is one, or it is not.
+  void mistake();
+  void not_a_mistake(std::string reason);
 };
 
 /// Decides comparisons from `facts` (for instantiating the library's templates with terms): a

@@ -34,6 +34,13 @@ std::string anchor(const std::string& title) {
   return a;
 }
 
+// Text for a Markdown table cell: a bare | would end the cell.
+std::string cell(const std::string& text) {
+  std::string s;
+  for (char ch : text) s += ch == '|' ? std::string("\\|") : std::string(1, ch);
+  return s;
+}
+
 void math_block(std::ostringstream& out, const std::string& math) { out << "```math\n" << math << "\n```\n\n"; }
 
 // " (for $P_y - h > 0$)" after a step's name, when it rests on premises.
@@ -48,11 +55,14 @@ step_counts count_steps(const std::vector<derivation>& derivations) {
   c.derivations = derivations.size();
   for (const auto& d : derivations)
     for (const auto& s : d.steps) {
+      if (s.about_source == verdict::mistake) ++c.mistakes;
+      if (s.about_source == verdict::not_a_mistake) ++c.not_mistakes;
       switch (s.kind) {
         case step_kind::definition: ++c.definitions; continue;
         case step_kind::code: ++c.code; break;
         case step_kind::erratum: ++c.errata; break;
         case step_kind::false_in_general: ++c.false_in_general; break;
+        case step_kind::sign: ++c.paths; break;
         default: break;
       }
       ++c.checked;
@@ -92,8 +102,28 @@ std::string markdown_document(const std::vector<derivation>& derivations,
          "the convention says which one it assumes); a plane is $P = (a, b, c, d)$ with "
          "$P \\cdot (x, y, z, 1) = 0$; a light is $L = (L_x, L_y, L_z, L_w)$, directional when $L_w = 0$.\n\n"
       << "In all: " << counts.derivations << " derivations, " << counts.checked << " checked steps (" << counts.code
-      << " of them on the library's code, " << counts.errata << " errata and " << counts.false_in_general
-      << " false shortcuts refuted) and " << counts.definitions << " definitions.\n\n";
+      << " of them on the library's code, " << counts.paths << " on the paths of `classify_point`, " << counts.errata
+      << " errata and " << counts.false_in_general << " false shortcuts refuted) and " << counts.definitions
+      << " definitions. The reference derivations make " << counts.mistakes << " mistakes (" << counts.errata
+      << " refuted by an exact counterexample, the others shown wrong by a checked step) and " << counts.not_mistakes
+      << " more candidates turn out not to be mistakes:\n\n";
+  // The mistakes of the reference derivations, and the candidates that are none, at a glance.
+  for (const verdict v : {verdict::mistake, verdict::not_a_mistake}) {
+    out << (v == verdict::mistake ? "### What the reference derivations get wrong\n\n"
+                                  : "### Checked, and not a mistake\n\n");
+    out << "| source | statement | " << (v == verdict::mistake ? "read with" : "why not") << " | derivation |\n"
+        << "| --- | --- | --- | --- |\n";
+    for (std::size_t i = 0; i < derivations.size(); ++i)
+      for (const auto& s : derivations[i].steps) {
+        if (s.about_source != v) continue;
+        const std::string heading = std::to_string(i + 1) + ". " + derivations[i].title;
+        out << "| " << derivations[i].source << " | " << cell(s.name) << " | "
+            << cell(v == verdict::mistake ? (s.convention.empty() ? std::string("any convention") : s.convention)
+                                          : s.reason)
+            << " | [" << heading << "](#" << anchor(heading) << ") |\n";
+      }
+    out << "\n";
+  }
   out << "## Contents\n\n";
   for (std::size_t i = 0; i < derivations.size(); ++i) {
     const std::string heading = std::to_string(i + 1) + ". " + derivations[i].title;

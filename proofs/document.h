@@ -17,7 +17,8 @@ std::string markdown_document(const std::vector<derivation>& derivations,
 
 /// How many steps of each kind, over all derivations.
 struct step_counts {
-  std::size_t derivations = 0, checked = 0, code = 0, definitions = 0, errata = 0, false_in_general = 0;
+  std::size_t derivations = 0, checked = 0, code = 0, paths = 0, definitions = 0, errata = 0, false_in_general = 0;
+  std::size_t mistakes = 0, not_mistakes = 0;
 };
 step_counts count_steps(const std::vector<derivation>& derivations);
 

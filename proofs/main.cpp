@@ -58,8 +58,9 @@ int main(int argc, char** argv) {
   }
   if (mode == "count") {
     const step_counts c = count_steps(all_derivations());
-    std::cout << "derivations " << c.derivations << "\nchecked " << c.checked << "\ncode " << c.code << "\nerrata "
-              << c.errata << "\nfalse_in_general " << c.false_in_general << "\ndefinitions " << c.definitions << '\n';
+    std::cout << "derivations " << c.derivations << "\nchecked " << c.checked << "\ncode " << c.code << "\npaths " << c.paths
+              << "\nerrata " << c.errata << "\nfalse_in_general " << c.false_in_general << "\ndefinitions "
+              << c.definitions << "\nmistakes " << c.mistakes << "\nnot_mistakes " << c.not_mistakes << '\n';
     return 0;
   }
   if (mode == "check") {

@@ -74,6 +74,7 @@ derivation normal_matrix() {
          "forces $M^{\\mathsf T} G = \\lambda I$ only. Not a mistake in the result, since a normal's length and "
          "sign of scale do not matter and $\\lambda = 1$ is a choice.",
          dot(M * t, (2 * G) * n), 2 * dot(t, n));
+  D.not_a_mistake("only sufficient, but any multiple of G is as good: a normal's length does not matter");
 
   const std::vector<std::pair<term, term>> stretch{{m[0], 2}, {m[1], 0}, {m[2], 0}, {m[3], 0}, {m[4], 1},
                                                    {m[5], 0}, {m[6], 0}, {m[7], 0}, {m[8], 1}};
@@ -109,6 +110,8 @@ derivation normal_matrix() {
            "can, and its row form $N_c^{\\mathsf T} G^{\\mathsf T}$, which the seed writes as "
            "$N_c M_{p \\to c}$ with row vectors, is just its transpose.",
            transpose(G * n), transpose(n) * transpose(G));
+  D.steps.back().convention = "column vectors; its row form is the transpose";
+  D.mistake();
 
   const auto decide = comparisons_from(D.facts);
   const scoped_comparisons installed(*decide);

@@ -123,6 +123,7 @@ derivation seed001_ground_plane() {
                "mistake, but the two methods differ there.",
                clamped, affine(M * X), {{h, 0}, {Lx, 1}, {Ly, 1}, {Lz, 0}, {Px, 0}, {Py, -1}, {Pz, 0}});
     D.under(below);
+    D.not_a_mistake("a deliberate clamp: a point below the ground stays where it is instead of casting a false shadow");
   }
   D.conclusion =
       "Both methods are the shadow matrix for points above the ground; below it, method 2 leaves the point "

@@ -41,6 +41,7 @@ derivation seed002_point_light_ground() {
          "With $P = (0, 1, 0, 0)$ and $L = (x_l, y_l, z_l, 1)$, $P \\cdot L = y_l$; every entry of "
          "$T(\\ell) N T(-\\ell)$ is $1/y_l$ times the entry of $M$, so both are the same projective map.",
          composed, (1 / yl) * M);
+  D.not_a_mistake("a non-zero multiple of a homogeneous matrix is the same projective map");
   const mat MV = M * V;
   D.show("the seed's x_p",
          "The x coordinate of $M V$ divided by its $w = y_l - y$; this needs $y \\neq y_l$: a point level with "

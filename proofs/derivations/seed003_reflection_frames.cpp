@@ -79,12 +79,13 @@ derivation seed003_reflection_frames() {
                                    code_tex("reflection_by_frame_as_printed_in_seed003") + "(R, d)");
   D.code("the library's copy of the printed product", "The seed's product, kept in the library to exhibit it.",
          "reflect.h", printed, T_dN * transpose(R) * S * R * T_minus_dN);
-  D.refute("the seed's T(dN) R^T S R T(-dN), read with column vectors",
+  D.disprove("the seed's T(dN) R^T S R T(-dN), read with column vectors",
            "Applied as $M X$, the rightmost factor acts first: $T(-dN)$ sends the mirror's point $-dN$ to $-2dN$ "
            "instead of the origin. The smallest counterexample: the mirror $y = 1$ ($N = (0, 1, 0)$, $d = -1$, "
            "$R = I$ from $q = (1, 0, 0, 0)$); the product sends the origin to $(0, -2, 0)$, but its mirror image "
            "is $(0, 2, 0)$.",
-           "column vectors, X' = M X", printed, M, {{qw, 1}, {qx, 0}, {qy, 0}, {qz, 0}, {d, -1}});
+           printed, M, {{qw, 1}, {qx, 0}, {qy, 0}, {qz, 0}, {d, -1}});
+  D.steps.back().convention = "column vectors, X' = M X";
   D.show("what the printed order reflects about, with column vectors",
          "It is the reflection about $\\langle N, X \\rangle - d = 0$: right only for mirrors through the origin.",
          printed, mirror_closed_form(N, -d, "M(N, -d)"));
@@ -100,6 +101,7 @@ derivation seed003_reflection_frames() {
          "$M_{\\text{row}}^{\\mathsf T}$, and it is the reflection for every rotation and every $d$. So this is "
          "not a mistake of the seed but a convention it leaves unstated.",
          transpose(row_product), M);
+  D.not_a_mistake("right read with row vectors, as its steps are listed; the seed never states its convention");
 
   const mat corrected = from_library(reflection_by_frame(frame, d), code_tex("reflection_by_frame") + "(R, d)");
   D.code("corrected for column vectors: T(-dN) R^T S R T(dN)",
