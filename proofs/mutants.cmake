@@ -14,7 +14,8 @@ set(SHADOWPROOF_MUTATIONS
   "constructions/project.h|M(0, 0) = cot_half_fovy / aspect|M(0, 0) = cot_half_fovy * aspect|the library's perspective, gl"
   "constructions/project.h|T(0), T(0), T(n + f), T(-n * f),|T(0), T(0), T(n - f), T(-n * f),|the library's games101_persp_to_ortho"
   "constructions/normal_matrix.h|return transpose(inverse(M))|return inverse(M)|the library's normal_matrix is"
-  "constructions/basis.h|M(i, 3) = -d|M(i, 3) = d|the library's orthonormal shortcut")
+  "constructions/basis.h|M(i, 3) = -d|M(i, 3) = d|the library's orthonormal shortcut"
+  "constructions/basis.h|M(i, 3) = origin[i]|M(i, 3) = -origin[i]|the library's child_to_parent")
 
 set(mutant_root ${CMAKE_CURRENT_BINARY_DIR}/mutant_include)
 file(REMOVE_RECURSE ${mutant_root})

@@ -34,7 +34,7 @@ figure_panel frustum_panel(const rational& l, const rational& r, const rational&
   panel.hexahedron(c, figure_style::volume);
   const point3 eye{0, 0, 0};
   for (int i = 0; i < 4; ++i) panel.segment(eye, c[i], figure_style::axis);
-  panel.dot(eye, figure_style::light, "eye");
+  panel.dot(eye, figure_style::eye, "eye");
   for (const auto& X : points) {
     panel.segment(eye, xyz3(X), figure_style::ray);
     panel.dot(xyz3(X), figure_style::point, point_text(xyz3(X)));
@@ -227,7 +227,7 @@ explanation explain_orthographic(const rational& l, const rational& r, const rat
   box.title = "eye space, looking down −z: the box";
   box.view = figure_view::side;
   box.hexahedron(box_corners(l, r, b, t, -f, -n), figure_style::volume);
-  box.dot({0, 0, 0}, figure_style::light, "eye");
+  box.dot({0, 0, 0}, figure_style::eye, "eye");
   for (const auto& X : points) box.dot(xyz3(X), figure_style::point, point_text(xyz3(X)));
   e.picture.title = "Orthographic projection, " + std::string(to_string(c));
   e.picture.panels = {box, canonical_panel(c, M, points, std::string("NDC: ") + convention_depths(c))};
@@ -395,7 +395,7 @@ explanation explain_games101(const rational& n, const rational& f, const rationa
     bc[i] = {(i & 1) ? right : -right, (i & 2) ? top : -top, (i & 4) ? f : n};
   }
   frustum_view.hexahedron(fc, figure_style::volume);
-  frustum_view.dot({0, 0, 0}, figure_style::light, "eye");
+  frustum_view.dot({0, 0, 0}, figure_style::eye, "eye");
   for (int i = 0; i < 4; ++i) frustum_view.segment({0, 0, 0}, fc[i], figure_style::axis);
   squeezed.title = "after persp→ortho: the box";
   squeezed.view = figure_view::side;

@@ -1,12 +1,13 @@
-// SVG pictures of explanations. The geometry is exact; doubles appear only as drawing
-// coordinates, rounded once each.
+// Pictures of explanations, written with the shared SVG writer. The geometry is exact; doubles
+// appear only as drawing coordinates, rounded once each.
 #include "shadowproof/explain/figure.h"
 
 #include <algorithm>
-#include <cstdio>
+#include <cmath>
 #include <limits>
 #include <set>
-#include <sstream>
+
+#include "shadowproof/core/svg.h"
 
 namespace shadowproof {
 
@@ -34,25 +35,6 @@ void figure_panel::hexahedron(const std::array<point3, 8>& c, figure_style s) {
 
 namespace {
 
-std::string fmt(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.2f", x);
-  std::string s = buf;
-  return s == "-0.00" ? "0.00" : s;
-}
-
-std::string escape(const std::string& s) {
-  std::string o;
-  for (char c : s) {
-    if (c == '<') o += "&lt;";
-    else if (c == '>') o += "&gt;";
-    else if (c == '&') o += "&amp;";
-    else if (c == '"') o += "&quot;";
-    else o += c;
-  }
-  return o;
-}
-
 struct look {
   const char* stroke;
   const char* fill;
@@ -68,24 +50,29 @@ look look_of(figure_style s) {
     case figure_style::plane: return {"#8a8a8a", "#eeeeee", "", 1.0, "projection plane"};
     case figure_style::light: return {"#b07800", "#ffd54a", "", 1.5, "light"};
     case figure_style::light_travel: return {"#c98a00", "none", "", 1.5, "light travels"};
+    case figure_style::eye: return {"#b07800", "#ffd54a", "", 1.5, "eye"};
     case figure_style::point: return {"#163f80", "#2f6fd6", "", 1.0, "point"};
     case figure_style::real_shadow: return {"#6e120c", "#b3261e", "", 1.0, "real shadow"};
     case figure_style::false_shadow: return {"#b3261e", "white", "", 1.8, "false shadow (behind the receiver)"};
     case figure_style::anti_shadow: return {"#4a1d7a", "#8e5cc7", "", 1.0, "anti-shadow (beyond the light)"};
     case figure_style::image: return {"#6e120c", "#b3261e", "", 1.0, "image"};
     case figure_style::ray: return {"#e08a00", "none", "", 1.6, "ray"};
-    case figure_style::extension: return {"#e08a00", "none", "5,4", 1.3, "same line, no light on it"};
+    case figure_style::extension: return {"#e08a00", "none", "5 4", 1.3, "same line, no light on it"};
     case figure_style::volume: return {"#2b6cb0", "none", "", 1.4, "view volume"};
     case figure_style::canonical: return {"#2f855a", "none", "", 1.4, "canonical volume (NDC)"};
     case figure_style::axis: return {"#9a9a9a", "none", "", 1.0, "axes"};
     case figure_style::frame_axis: return {"#2f855a", "none", "", 2.0, "frame axes"};
     case figure_style::normal: return {"#222222", "none", "", 2.0, "normal"};
     case figure_style::tangent: return {"#2f6fd6", "none", "", 2.0, "tangent"};
-    case figure_style::wrong: return {"#d11a1a", "none", "4,3", 1.6, "what the wrong formula gives"};
-    case figure_style::link: return {"#777777", "none", "5,4", 1.3, "a point and its image"};
-    case figure_style::walk: return {"#2f855a", "none", "5,4", 1.3, "O_c + a X_c + b Y_c + c Z_c"};
+    case figure_style::wrong: return {"#d11a1a", "none", "4 3", 1.6, "what the wrong formula gives"};
+    case figure_style::link: return {"#777777", "none", "5 4", 1.3, "a point and its image"};
+    case figure_style::walk: return {"#2f855a", "none", "5 4", 1.3, "O_c + a X_c + b Y_c + c Z_c"};
   }
   return {"black", "none", "", 1.0, ""};
+}
+
+bool is_area(figure_style s) {
+  return s == figure_style::receiver || s == figure_style::mirror || s == figure_style::plane;
 }
 
 struct projected {
@@ -105,11 +92,12 @@ projected view_of(const point3& p, figure_view v) {
 
 struct frame {
   double x0, y0, scale, left, top;
-  double x(const projected& p) const { return left + (p.x - x0) * scale; }
-  double y(const projected& p) const { return top - (p.y - y0) * scale; }
+  projected at(const projected& p) const { return {left + (p.x - x0) * scale, top - (p.y - y0) * scale}; }
 };
 
 constexpr double panel_height = 400, margin = 48, title_height = 56, legend_line = 18, legend_column = 250;
+// Labels go to the right of their points: keep more room on that side.
+constexpr double right_room = 140;
 
 frame fit(const figure_panel& panel, double left, double top, double panel_width) {
   double x0 = std::numeric_limits<double>::max(), x1 = std::numeric_limits<double>::lowest();
@@ -121,8 +109,6 @@ frame fit(const figure_panel& panel, double left, double top, double panel_width
     }
   if (x0 > x1) x0 = x1 = y0 = y1 = 0;
   const double w = std::max(x1 - x0, 1e-9), h = std::max(y1 - y0, 1e-9);
-  // Labels go to the right of their points: keep more room on that side.
-  const double right_room = 140;
   const double scale = std::min((panel_width - margin - right_room) / w, (panel_height - 2 * margin - 20) / h);
   const double used_w = w * scale, used_h = h * scale;
   const double l = left + margin + (panel_width - margin - right_room - used_w) / 2;
@@ -130,55 +116,78 @@ frame fit(const figure_panel& panel, double left, double top, double panel_width
   return {x0, y0, scale, l, t};
 }
 
-std::string stroke_attributes(const look& k) {
-  std::string s = " stroke=\"" + std::string(k.stroke) + "\" stroke-width=\"" + fmt(k.width) + "\"";
-  if (*k.dash) s += " stroke-dasharray=\"" + std::string(k.dash) + "\"";
-  return s;
+std::string dash_of(const look& k) {
+  return *k.dash ? "stroke-dasharray=\"" + std::string(k.dash) + "\"" : std::string();
 }
 
-void draw_item(std::ostringstream& out, const figure_item& item, const frame& f, figure_view v) {
+void stroke_line(svg_document& svg, const projected& a, const projected& b, const look& k) {
+  svg.path("M" + svg.number(a.x) + "," + svg.number(a.y) + " L" + svg.number(b.x) + "," + svg.number(b.y), "none",
+           k.stroke, k.width, dash_of(k));
+}
+
+// A filled arrowhead at b, pointing from a to b.
+void arrowhead(svg_document& svg, const projected& a, const projected& b, const look& k) {
+  const double dx = b.x - a.x, dy = b.y - a.y, len = std::sqrt(dx * dx + dy * dy);
+  if (len < 1e-9) return;
+  const double ux = dx / len, uy = dy / len, size = 9, half = 4;
+  const projected base{b.x - ux * size, b.y - uy * size};
+  svg.path("M" + svg.number(b.x) + "," + svg.number(b.y) + " L" + svg.number(base.x - uy * half) + "," +
+               svg.number(base.y + ux * half) + " L" + svg.number(base.x + uy * half) + "," +
+               svg.number(base.y - ux * half) + " Z",
+           k.stroke, k.stroke, 1);
+}
+
+void draw_item(svg_document& svg, const figure_item& item, const frame& f, figure_view v) {
   const look k = look_of(item.style);
   switch (item.kind) {
     case figure_item::shape::polygon: {
-      out << "<path d=\"";
+      std::string d;
       for (std::size_t i = 0; i < item.at.size(); ++i) {
-        const projected p = view_of(item.at[i], v);
-        out << (i ? " L" : "M") << fmt(f.x(p)) << ',' << fmt(f.y(p));
+        const projected p = f.at(view_of(item.at[i], v));
+        d += (i ? " L" : "M") + svg.number(p.x) + "," + svg.number(p.y);
       }
-      out << " Z\" fill=\"" << k.fill << "\" fill-opacity=\"0.75\"" << stroke_attributes(k) << "/>\n";
+      svg.path(d + " Z", k.fill, k.stroke, k.width, "fill-opacity=\"0.75\"");
       break;
     }
     case figure_item::shape::segment:
     case figure_item::shape::arrow: {
-      const projected a = view_of(item.at[0], v), b = view_of(item.at[1], v);
-      out << "<line x1=\"" << fmt(f.x(a)) << "\" y1=\"" << fmt(f.y(a)) << "\" x2=\"" << fmt(f.x(b)) << "\" y2=\""
-          << fmt(f.y(b)) << "\"" << stroke_attributes(k);
-      if (item.kind == figure_item::shape::arrow) out << " marker-end=\"url(#head" << static_cast<int>(item.style) << ")\"";
-      out << "/>\n";
+      const projected a = f.at(view_of(item.at[0], v)), b = f.at(view_of(item.at[1], v));
+      stroke_line(svg, a, b, k);
+      if (item.kind == figure_item::shape::arrow) arrowhead(svg, a, b, k);
       break;
     }
     case figure_item::shape::dot: {
-      const projected p = view_of(item.at[0], v);
-      const double r = item.style == figure_style::light ? 7.5 : 4.5;
-      out << "<circle cx=\"" << fmt(f.x(p)) << "\" cy=\"" << fmt(f.y(p)) << "\" r=\"" << fmt(r) << "\" fill=\"" << k.fill
-          << "\"" << stroke_attributes(k) << "/>\n";
+      const projected p = f.at(view_of(item.at[0], v));
+      const double r = item.style == figure_style::light || item.style == figure_style::eye ? 7.5 : 4.5;
+      const std::string d = "M" + svg.number(p.x - r) + "," + svg.number(p.y) + " a" + svg.number(r) + "," +
+                            svg.number(r) + " 0 1,0 " + svg.number(2 * r) + ",0 a" + svg.number(r) + "," +
+                            svg.number(r) + " 0 1,0 " + svg.number(-2 * r) + ",0 Z";
+      svg.path(d, k.fill, k.stroke, k.width, dash_of(k));
       break;
     }
   }
 }
 
-void draw_label(std::ostringstream& out, const figure_item& item, const frame& f, figure_view v) {
+void draw_label(svg_document& svg, const figure_item& item, const frame& f, figure_view v) {
   if (item.label.empty()) return;
-  projected at{0, 0};
-  if (item.kind == figure_item::shape::dot) {
-    at = view_of(item.at[0], v);
-  } else if (item.kind == figure_item::shape::polygon) {
-    at = view_of(item.at[0], v);
+  const point3& anchor = item.kind == figure_item::shape::segment || item.kind == figure_item::shape::arrow ? item.at[1]
+                                                                                                       : item.at[0];
+  const projected at = f.at(view_of(anchor, v));
+  svg.text(at.x + 8, at.y - 7, item.label, "start", "#222", 12);
+}
+
+// The legend swatch of a style: an area, a dot or a line.
+void swatch(svg_document& svg, figure_style s, double x, double y) {
+  const look k = look_of(s);
+  if (is_area(s)) {
+    svg.path("M" + svg.number(x) + "," + svg.number(y - 9) + " h18 v11 h-18 Z", k.fill, k.stroke, k.width);
+  } else if (std::string(k.fill) != "none") {
+    const double r = 4.5, cx = x + 9, cy = y - 4;
+    svg.path("M" + svg.number(cx - r) + "," + svg.number(cy) + " a4.5,4.5 0 1,0 9,0 a4.5,4.5 0 1,0 -9,0 Z", k.fill,
+             k.stroke, k.width);
   } else {
-    at = view_of(item.at[1], v);
+    stroke_line(svg, {x, y - 4}, {x + 18, y - 4}, k);
   }
-  out << "<text x=\"" << fmt(f.x(at) + 8) << "\" y=\"" << fmt(f.y(at) - 7) << "\" font-size=\"12\" fill=\"#222\""
-      << " stroke=\"white\" stroke-width=\"3\" paint-order=\"stroke\">" << escape(item.label) << "</text>\n";
 }
 
 }  // namespace
@@ -200,54 +209,29 @@ std::string to_svg(const figure& fig) {
   const double legend_height = 16 + legend_line * static_cast<double>((legend.size() + per_row - 1) / per_row);
   const double height = title_height + panel_height + legend_height + 10;
 
-  std::ostringstream out;
-  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << fmt(width) << "\" height=\"" << fmt(height)
-      << "\" viewBox=\"0 0 " << fmt(width) << ' ' << fmt(height) << "\" font-family=\"sans-serif\" font-size=\"14\">\n";
-  out << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n<defs>\n";
-  for (int s : used) {
-    const look k = look_of(static_cast<figure_style>(s));
-    out << "<marker id=\"head" << s << "\" viewBox=\"0 0 10 10\" refX=\"9\" refY=\"5\" markerWidth=\"7\" markerHeight=\"7\""
-        << " orient=\"auto-start-reverse\"><path d=\"M0,0 L10,5 L0,10 z\" fill=\"" << k.stroke << "\"/></marker>\n";
-  }
-  out << "</defs>\n";
-  out << "<text x=\"16\" y=\"30\" font-size=\"17\" font-weight=\"bold\">" << escape(fig.title) << "</text>\n";
+  svg_document svg(width, height, 14, 2);
+  svg.text(16, 30, fig.title, "start", "", 17);
   for (std::size_t i = 0; i < fig.panels.size(); ++i) {
     const figure_panel& panel = fig.panels[i];
     const double left = 10 + static_cast<double>(i) * panel_width, top = title_height;
-    out << "<rect x=\"" << fmt(left + 4) << "\" y=\"" << fmt(top) << "\" width=\"" << fmt(panel_width - 8)
-        << "\" height=\"" << fmt(panel_height) << "\" fill=\"#fcfcfc\" stroke=\"#dddddd\"/>\n";
-    out << "<text x=\"" << fmt(left + 14) << "\" y=\"" << fmt(top + 20) << "\" font-size=\"14\" fill=\"#333\">"
-        << escape(panel.title) << "</text>\n";
+    svg.rect(left + 4, top, panel_width - 8, panel_height, "#fcfcfc", "#dddddd");
+    svg.text(left + 14, top + 20, panel.title, "start", "#333", 14);
     const frame f = fit(panel, left, top, panel_width);
     // Planes first, then lines, then points, then labels on top.
     for (const auto kind : {figure_item::shape::polygon, figure_item::shape::segment, figure_item::shape::arrow,
                             figure_item::shape::dot})
       for (const auto& item : panel.items)
-        if (item.kind == kind) draw_item(out, item, f, panel.view);
-    for (const auto& item : panel.items) draw_label(out, item, f, panel.view);
+        if (item.kind == kind) draw_item(svg, item, f, panel.view);
+    for (const auto& item : panel.items) draw_label(svg, item, f, panel.view);
   }
-  // Legend.
   const double legend_top = title_height + panel_height + 22;
   for (std::size_t i = 0; i < legend.size(); ++i) {
-    const look k = look_of(static_cast<figure_style>(legend[i]));
-    const double x = 20 + static_cast<double>(i % per_row) * legend_column, y = legend_top + legend_line * static_cast<double>(i / per_row);
-    const bool area = std::string(k.fill) != "none" && legend[i] <= static_cast<int>(figure_style::plane);
-    const bool dot = std::string(k.fill) != "none" && !area;
-    if (area) {
-      out << "<rect x=\"" << fmt(x) << "\" y=\"" << fmt(y - 9) << "\" width=\"18\" height=\"11\" fill=\"" << k.fill << "\""
-          << stroke_attributes(k) << "/>\n";
-    } else if (dot) {
-      out << "<circle cx=\"" << fmt(x + 9) << "\" cy=\"" << fmt(y - 4) << "\" r=\"4.5\" fill=\"" << k.fill << "\""
-          << stroke_attributes(k) << "/>\n";
-    } else {
-      out << "<line x1=\"" << fmt(x) << "\" y1=\"" << fmt(y - 4) << "\" x2=\"" << fmt(x + 18) << "\" y2=\"" << fmt(y - 4)
-          << "\"" << stroke_attributes(k) << "/>\n";
-    }
-    out << "<text x=\"" << fmt(x + 26) << "\" y=\"" << fmt(y) << "\" font-size=\"12\" fill=\"#333\">" << escape(k.legend)
-        << "</text>\n";
+    const double x = 20 + static_cast<double>(i % per_row) * legend_column;
+    const double y = legend_top + legend_line * static_cast<double>(i / per_row);
+    swatch(svg, static_cast<figure_style>(legend[i]), x, y);
+    svg.text(x + 26, y, look_of(static_cast<figure_style>(legend[i])).legend, "start", "#333", 12);
   }
-  out << "</svg>\n";
-  return out.str();
+  return svg.str();
 }
 
 }  // namespace shadowproof

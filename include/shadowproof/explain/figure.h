@@ -21,6 +21,7 @@ enum class figure_style {
   plane,          ///< another plane, e.g. z = 0 of a parallel projection
   light,          ///< a point light (yellow)
   light_travel,   ///< the direction light travels (arrow)
+  eye,            ///< the eye of a projection (yellow)
   point,          ///< an input point (blue)
   real_shadow,    ///< its image when it is a real shadow (dark red)
   false_shadow,   ///< its image behind the receiver (hollow red)
