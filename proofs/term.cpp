@@ -179,8 +179,16 @@ std::string product_tex(const term& t) {
   flatten(t, node_kind::mul, factors);
   std::string s;
   for (std::size_t i = 0; i < factors.size(); ++i) {
-    const std::string f = factors[i].tex(i == 0 ? tex_precedence::product : tex_precedence::factor);
-    if (i > 0) {
+    const bool first = i == 0;
+    std::string f = factors[i].tex(first ? tex_precedence::product : tex_precedence::factor);
+    // A run of one variable reads as a power: n n is n^{2}.
+    std::size_t run = 1;
+    while (factors[i].is_symbol() && i + run < factors.size() && factors[i + run].pointer() == factors[i].pointer()) ++run;
+    if (run > 1) {
+      f += "^{" + std::to_string(run) + "}";
+      i += run - 1;
+    }
+    if (!first) {
       const bool digit = !f.empty() && (std::isdigit(static_cast<unsigned char>(f[0])) || f.rfind("\\frac", 0) == 0);
       s += digit ? " \\cdot " : " ";
     }

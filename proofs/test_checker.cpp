@@ -144,6 +144,21 @@ int main() {
     expect(rejected_for(d, reason), "seed 003's old 'Q is r(t0)' (both sides the same expression) is rejected");
     d.show("a cancellation through a division is not 'the same expression'", "", (n * z) / n, z);
     expect(last(d).ok, "(n z)/n = z with n ≠ 0 is a real step (divisions stay opaque when comparing)");
+    // Orthographic's old step 6, z/((x + z cot θ) − x) = 1/cot θ: a cancellation through a
+    // division, so it needs z ≠ 0 and cot θ ≠ 0 declared.
+    const term ct = var("ct", "\\cot\\theta");
+    derivation o;
+    o.slug = "oblique angle";
+    o.show("tan theta", "", z / ((x + z * ct) - x), 1 / ct);
+    expect(rejected_for(o, "divides by"), "orthographic's old 'z/(x_p − x) = 1/cot θ' is rejected without its facts");
+    o.assume_nonzero(z);
+    o.assume_nonzero(ct);
+    expect(last(o).ok, "and holds once z ≠ 0 and cot θ ≠ 0 are facts");
+    // Perspective's old step 2, x/w = (−z)/(−z) = 1 on the side x = −z of the frustum.
+    derivation p;
+    p.slug = "frustum side";
+    p.show("x/w on the side x = -z", "", (-z) / (-z), 1);
+    expect(rejected_for(p, "divides by -z"), "perspective's old '(−z)/(−z) = 1' is rejected without z ≠ 0");
     d.define("a definition that does not hold", "", x, y);
     expect(rejected_for(d, "does not hold"), "a definition must still hold");
   }
