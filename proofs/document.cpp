@@ -91,7 +91,7 @@ std::string markdown_document(const std::vector<derivation>& derivations,
          "Every formula below is printed from the very expression that is checked. Steps marked **code** "
          "instantiate the library's own templates (`include/shadowproof/constructions/`) with a symbolic "
          "number type and compare what they compute with the derivation, so a change to a formula in the "
-         "library makes its proof fail (a test checks exactly that on a patched copy of the headers). "
+         "library makes its proof fail (a test checks exactly that on a copy of the headers, changing the formulas one at a time). "
          "A step marked **erratum** is an equation printed in one of the reference derivations that is "
          "false when read with the vector convention it names: the check confirms that the difference is "
          "not identically zero and evaluates it at an exact counterexample that respects every fact; the "

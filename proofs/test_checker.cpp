@@ -159,6 +159,15 @@ int main() {
     p.slug = "frustum side";
     p.show("x/w on the side x = -z", "", (-z) / (-z), 1);
     expect(rejected_for(p, "divides by -z"), "perspective's old '(−z)/(−z) = 1' is rejected without z ≠ 0");
+    // Seed 003's old "corrected t": <N, L> + t0 <N, V - L> + d = 0 for t0 = -(<N, L> + d)/<N, V - L>
+    // (here a, c, b): GiNaC used to cancel <N, V - L> on sight; read as written it is a real step
+    // that needs <N, V - L> != 0.
+    derivation t;
+    t.slug = "corrected t";
+    t.show("the plane equation at t0", "", a + (-(a + b) / c) * c + b, 0);
+    expect(rejected_for(t, "divides by c"), "seed 003's old 'corrected t' is rejected without <N, V - L> ≠ 0");
+    t.assume_nonzero(c);
+    expect(last(t).ok, "and holds once <N, V - L> ≠ 0 is a fact");
     d.define("a definition that does not hold", "", x, y);
     expect(rejected_for(d, "does not hold"), "a definition must still hold");
   }

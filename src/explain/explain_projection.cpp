@@ -1,6 +1,9 @@
 // Explanations of the projection matrices: seed 002's N(α, β), the frustum in any depth convention,
 // the orthographic and oblique projections (both signs of cot), and GAMES101's construction, each
 // with a figure of the view volume and the canonical volume.
+#include <algorithm>
+#include <cmath>
+
 #include "explain_detail.h"
 #include "shadowproof/core/error.h"
 
@@ -292,11 +295,55 @@ explanation explain_oblique(const rational& cot_theta, const rational& cot_phi, 
       scene.dot(x, figure_style::point, point_text(x));
       scene.dot(image, figure_style::image, point_text(image));
     }
+    // The angle θ itself: the right triangle of the first point off the plane, seen in the xz-plane,
+    // with legs z and x_p − x (or x − x_p with the −cot angles) and the projector as hypotenuse.
+    figure_panel angle;
+    angle.view = figure_view::xz;
+    angle.title = sign == cot_sign::plus ? "the xz-plane: tan θ = z/(x_p − x)" : "the xz-plane: tan θ = z/(x − x_p)";
+    for (const auto& X : drawn) {
+      const point3 x = xyz3(X), image = xyz3(M * X);
+      if (x[2] == 0 || x[0] == image[0]) continue;
+      const point3 foot{x[0], 0, 0}, on_plane{image[0], 0, 0}, top{x[0], 0, x[2]};
+      const point3 up_half{x[0], 0, x[2] / 2}, along_half{(x[0] + image[0]) / 2, 0, 0};
+      const rational lo = std::min(x[0], image[0]) - 1, hi = std::max(x[0], image[0]) + 1;
+      angle.segment({lo, 0, 0}, {hi, 0, 0}, figure_style::axis, "z = 0");
+      // The legs, each in two halves so that its label sits at its middle.
+      angle.segment(top, up_half, figure_style::link, "z = " + str(x[2]));
+      angle.segment(up_half, foot, figure_style::link);
+      angle.segment(foot, along_half, figure_style::link,
+                    (sign == cot_sign::plus ? "x_p − x = " : "x − x_p = ") +
+                        str(sign == cot_sign::plus ? image[0] - x[0] : x[0] - image[0]));
+      angle.segment(along_half, on_plane, figure_style::link);
+      angle.segment(top, on_plane, figure_style::ray);
+      // A mark for θ at the image, from the plane towards the point: the rational points
+      // image + r ((1 − t²)/(1 + t²) s, 2t/(1 + t²) σ) of the circle of radius r, for t up to
+      // tan(θ/2) (rounded to 1/1000: the mark only has to be seen).
+      const rational run = x[0] - image[0], rise = x[2];
+      const double a = std::abs(to_nearest_double(run)), h = std::abs(to_nearest_double(rise));
+      const rational half_tan(static_cast<long>(std::lround(1000 * h / (std::sqrt(a * a + h * h) + a))), 1000);
+      const rational run_length = run > 0 ? run : rational(-run), rise_length = rise > 0 ? rise : rational(-rise);
+      const rational radius = std::min(run_length, rise_length) / 3;
+      const rational s = run > 0 ? 1 : -1, sigma = rise > 0 ? 1 : -1;
+      point3 previous{};
+      for (int step = 0; step <= 8; ++step) {
+        const rational t = half_tan * rational(step, 8), q = 1 + t * t;
+        const point3 p{image[0] + radius * s * (1 - t * t) / q, 0, radius * sigma * 2 * t / q};
+        if (step > 0) angle.segment(previous, p, figure_style::axis, step == 4 ? "θ" : "");
+        previous = p;
+      }
+      angle.dot(top, figure_style::point, "(x, z) = (" + str(x[0]) + ", " + str(x[2]) + ")");
+      angle.dot(on_plane, figure_style::image, "(x_p, 0) = (" + str(image[0]) + ", 0)");
+      break;
+    }
     e.picture.panels = {scene};
+    if (!angle.items.empty()) e.picture.panels.push_back(angle);
     e.picture.caption = "projectors along $" + vec_text(projector) + "$ ($\\cot\\theta = " + str(cot_theta) +
                         "$, $\\cot\\phi = " + str(cot_phi) + "$, " + (sign == cot_sign::minus ? "$-\\cot$" : "$+\\cot$") +
                         " in $H$) carry " + (points.empty() ? "the points $(0, 0, 2)$ and $(0, 1, 2)$" : "the points") +
-                        " onto the plane $z = 0$.";
+                        " onto the plane $z = 0$" +
+                        (angle.items.empty() ? std::string(".")
+                                             : std::string("; the right panel shows $\\theta$ as the angle, at the image, between "
+                                                           "the plane and the projector in the xz-plane."));
   } else {
     const mat4<rational> O = orthographic(box->l, box->r, box->b, box->t, box->n, box->f, box->c);
     M = O * H;

@@ -5,7 +5,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <iterator>
 #include <set>
+#include <utility>
+#include <vector>
 
 #include "shadowproof/core/svg.h"
 
@@ -86,6 +89,7 @@ projected view_of(const point3& p, figure_view v) {
     case figure_view::front: sx = p[0] - rational(2, 5) * p[2], sy = p[1] - rational(1, 2) * p[2]; break;
     case figure_view::side: sx = -p[2] - rational(3, 10) * p[0], sy = p[1] - rational(1, 5) * p[0]; break;
     case figure_view::depth: sx = p[0] + rational(2, 5) * p[2], sy = p[1] + rational(1, 2) * p[2]; break;
+    case figure_view::xz: sx = p[0], sy = p[2]; break;
   }
   return {to_nearest_double(sx), to_nearest_double(sy)};
 }
@@ -168,12 +172,70 @@ void draw_item(svg_document& svg, const figure_item& item, const frame& f, figur
   }
 }
 
-void draw_label(svg_document& svg, const figure_item& item, const frame& f, figure_view v) {
+// Label placement: each label takes the first of a few spots around its anchor that overlaps no
+// label placed before it, no dot and no drawn line, and stays inside its panel; failing that, the
+// spot with the fewest conflicts. Text is 12 px; its width is estimated at 7 px a character.
+struct box {
+  double x0, y0, x1, y1;
+  bool meets(const box& o) const { return x0 < o.x1 && o.x0 < x1 && y0 < o.y1 && o.y0 < y1; }
+};
+
+std::size_t characters(const std::string& utf8) {
+  std::size_t n = 0;
+  for (unsigned char c : utf8) n += (c & 0xC0) != 0x80;
+  return n;
+}
+
+// True when the segment a-b passes through the box (tested at a few points along it).
+bool crosses(const projected& a, const projected& b, const box& r) {
+  for (int i = 0; i <= 24; ++i) {
+    const double t = i / 24.0, x = a.x + t * (b.x - a.x), y = a.y + t * (b.y - a.y);
+    if (x > r.x0 && x < r.x1 && y > r.y0 && y < r.y1) return true;
+  }
+  return false;
+}
+
+struct label_placer {
+  box panel;
+  std::vector<box> taken;  // labels placed and dots drawn
+  std::vector<std::pair<projected, projected>> lines;
+
+  // Returns the text position and anchor ("start" or "end").
+  std::pair<projected, bool> place(const projected& at, const std::string& text) {
+    const double w = 7.0 * static_cast<double>(characters(text)), h = 13;
+    struct spot {
+      double dx, dy;
+      bool left;
+    };
+    static const spot spots[] = {{8, -7, false},  {8, 17, false},  {-8, -7, true},  {-8, 17, true},
+                                 {11, 5, false},  {-11, 5, true},  {8, -22, false}, {-8, -22, true},
+                                 {8, 32, false},  {-8, 32, true},  {-w / 2 + 0, -14, false}, {-w / 2, 26, false}};
+    double best_cost = std::numeric_limits<double>::max();
+    projected best_at{at.x + 8, at.y - 7};
+    bool best_left = false;
+    for (std::size_t i = 0; i < std::size(spots); ++i) {
+      const spot& s = spots[i];
+      const projected p{at.x + s.dx, at.y + s.dy};
+      const box b = s.left ? box{p.x - w, p.y - h + 3, p.x, p.y + 3} : box{p.x, p.y - h + 3, p.x + w, p.y + 3};
+      double cost = 0.01 * static_cast<double>(i);
+      if (b.x0 < panel.x0 || b.x1 > panel.x1 || b.y0 < panel.y0 || b.y1 > panel.y1) cost += 1000;
+      for (const box& t : taken) cost += b.meets(t) ? 100 : 0;
+      for (const auto& [a0, a1] : lines) cost += crosses(a0, a1, b) ? 3 : 0;
+      if (cost < best_cost) best_cost = cost, best_at = p, best_left = s.left;
+    }
+    const box chosen = best_left ? box{best_at.x - w, best_at.y - h + 3, best_at.x, best_at.y + 3}
+                                 : box{best_at.x, best_at.y - h + 3, best_at.x + w, best_at.y + 3};
+    taken.push_back(chosen);
+    return {best_at, best_left};
+  }
+};
+
+void draw_label(svg_document& svg, const figure_item& item, const frame& f, figure_view v, label_placer& placer) {
   if (item.label.empty()) return;
   const point3& anchor = item.kind == figure_item::shape::segment || item.kind == figure_item::shape::arrow ? item.at[1]
                                                                                                        : item.at[0];
-  const projected at = f.at(view_of(anchor, v));
-  svg.text(at.x + 8, at.y - 7, item.label, "start", "#222", 12);
+  const auto [at, left] = placer.place(f.at(view_of(anchor, v)), item.label);
+  svg.text(at.x, at.y, item.label, left ? "end" : "start", "#222", 12);
 }
 
 // The legend swatch of a style: an area, a dot or a line.
@@ -222,7 +284,20 @@ std::string to_svg(const figure& fig) {
                             figure_item::shape::dot})
       for (const auto& item : panel.items)
         if (item.kind == kind) draw_item(svg, item, f, panel.view);
-    for (const auto& item : panel.items) draw_label(svg, item, f, panel.view);
+    label_placer placer{{left + 6, top + 26, left + panel_width - 6, top + panel_height - 2}, {}, {}};
+    for (const auto& item : panel.items) {
+      if (item.kind == figure_item::shape::dot) {
+        const projected p = f.at(view_of(item.at[0], panel.view));
+        placer.taken.push_back({p.x - 6, p.y - 6, p.x + 6, p.y + 6});
+      } else if (item.kind != figure_item::shape::polygon) {
+        placer.lines.push_back({f.at(view_of(item.at[0], panel.view)), f.at(view_of(item.at[1], panel.view))});
+      } else {
+        for (std::size_t i = 0; i < item.at.size(); ++i)
+          placer.lines.push_back({f.at(view_of(item.at[i], panel.view)),
+                                  f.at(view_of(item.at[(i + 1) % item.at.size()], panel.view))});
+      }
+    }
+    for (const auto& item : panel.items) draw_label(svg, item, f, panel.view, placer);
   }
   const double legend_top = title_height + panel_height + 22;
   for (std::size_t i = 0; i < legend.size(); ++i) {

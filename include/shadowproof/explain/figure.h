@@ -54,8 +54,9 @@ struct figure_item {
 ///          looking down −z sees it from behind;
 ///   side:  at (−z − 3x/10, y − x/5): −z runs to the right, +x comes towards the reader (for
 ///          frusta and boxes along the view axis);
-///   depth: at (x + 2z/5, y + z/2): +z recedes (for NDC volumes whose far plane has the larger z).
-enum class figure_view { front, side, depth };
+///   depth: at (x + 2z/5, y + z/2): +z recedes (for NDC volumes whose far plane has the larger z);
+///   xz:    at (x, z): the plane y = 0 seen face on, z up (for angles measured in the xz-plane).
+enum class figure_view { front, side, depth, xz };
 
 /// One view of a figure, drawn in its own frame with its own scale.
 struct figure_panel {
