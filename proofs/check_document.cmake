@@ -1,16 +1,25 @@
-# Regenerates docs/derivations.md into the build tree and compares it with the committed copy.
-# -DRUNNER=<shadowproof_proofs> -DCOMMITTED=<source copy> -DFRESH=<build copy>
-get_filename_component(fresh_dir ${FRESH} DIRECTORY)
-file(MAKE_DIRECTORY ${fresh_dir})
-execute_process(COMMAND ${RUNNER} markdown ${FRESH} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+# Regenerates docs/derivations.md and docs/figures/ into the build tree and compares them with the
+# committed copies. -DRUNNER=<shadowproof_proofs> -DCOMMITTED=<source docs dir> -DFRESH=<build docs dir>
+file(REMOVE_RECURSE ${FRESH})
+file(MAKE_DIRECTORY ${FRESH}/figures)
+execute_process(COMMAND ${RUNNER} markdown ${FRESH}/derivations.md ${FRESH}/figures
+  RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT code EQUAL 0)
   message(FATAL_ERROR "writing the document failed (exit ${code}):\n${out}${err}")
 endif()
-if(NOT EXISTS ${COMMITTED})
-  message(FATAL_ERROR "${COMMITTED} is missing; run: cmake --build <build dir> --target update_derivations_doc")
-endif()
-execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${COMMITTED} ${FRESH} RESULT_VARIABLE differ)
+set(hint "run: cmake --build <build dir> --target update_derivations_doc")
+execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${COMMITTED}/derivations.md ${FRESH}/derivations.md RESULT_VARIABLE differ)
 if(NOT differ EQUAL 0)
-  message(FATAL_ERROR "docs/derivations.md is out of date with proofs/ (fresh copy: ${FRESH}); "
-                      "run: cmake --build <build dir> --target update_derivations_doc")
+  message(FATAL_ERROR "docs/derivations.md is out of date with proofs/ (fresh copy: ${FRESH}/derivations.md); ${hint}")
 endif()
+file(GLOB fresh_figures RELATIVE ${FRESH}/figures ${FRESH}/figures/*.svg)
+file(GLOB committed_figures RELATIVE ${COMMITTED}/figures ${COMMITTED}/figures/*.svg)
+if(NOT "${fresh_figures}" STREQUAL "${committed_figures}")
+  message(FATAL_ERROR "docs/figures/ does not hold exactly the generated figures (${fresh_figures} vs ${committed_figures}); ${hint}")
+endif()
+foreach(figure ${fresh_figures})
+  execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${COMMITTED}/figures/${figure} ${FRESH}/figures/${figure} RESULT_VARIABLE differ)
+  if(NOT differ EQUAL 0)
+    message(FATAL_ERROR "docs/figures/${figure} is out of date (fresh copy: ${FRESH}/figures/${figure}); ${hint}")
+  endif()
+endforeach()

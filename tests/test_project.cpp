@@ -206,7 +206,7 @@ TEST_CASE("seed 002's S·T equals the gl orthographic matrix", "[project]") {
   CHECK(orthographic_normalization_seed002(l, r, b, t, n, f) == orthographic(l, r, b, t, n, f, depth_convention::gl));
 }
 
-TEST_CASE("seed 002's printed S·T, with +(f+n)/(f-n) in row 3, misses the near plane", "[project]") {
+TEST_CASE("seed 002 erratum (column vectors): the printed S·T, with +(f+n)/(f-n) in row 3, misses the near plane", "[project][erratum]") {
   // Box [−1, 1]² × [−3, −1] (n = 1, f = 3): (f+n)/(f−n) = 2, −2/(f−n) = −1.
   const rational n = 1, f = 3;
   const mat4<rational> printed = make_mat4<rational>({1, 0, 0, 0,  //
@@ -444,7 +444,7 @@ TEST_CASE("GAMES101 persp->ortho fixes the near plane and the far centre, keeps 
   CHECK(ndc<rational>(M, 14, 7, f) == std::array<rational, 3>{1, q(1, 2), f});
 }
 
-TEST_CASE("seed 004's printed persp->ortho third row (0, 0, nf, -nf) is wrong", "[project]") {
+TEST_CASE("seed 004 erratum (column vectors): the printed persp->ortho third row (0, 0, nf, -nf) is wrong", "[project][erratum]") {
   // n = −1, f = −2, so nf = 2 and n + f = −3. The near-plane centre (0, 0, −1, 1):
   //   printed row: 2·(−1) − 2 = −4, w = −1 → z = 4, not n = −1;
   //   correct row: (−3)(−1) − 2 = 1,  w = −1 → z = −1 = n.

@@ -89,7 +89,7 @@ TEMPLATE_TEST_CASE("seed 000's closed form equals the general matrix for a direc
   }
 }
 
-TEST_CASE("seed 000 erratum: the intersection condition is (V + kL)·P = 0, not V + kL = 0", "[shadow][seed000][erratum]") {
+TEST_CASE("seed 000 erratum (no matrix): the intersection condition is (V + kL)·P = 0, not V + kL = 0", "[shadow][seed000][erratum]") {
   // V = (1,2,3,1), L = (1,1,0,0), P = (0,1,0,0). The seed's own k = -(V·P)/(L·P) = -2.
   const auto V = make_point<rational>(1, 2, 3);
   const auto L = make_vec4<rational>(1, 1, 0, 0);
@@ -176,7 +176,7 @@ TEST_CASE("seed 003's Q formula equals the general matrix", "[shadow][seed003]")
   CHECK(checked > 200);
 }
 
-TEST_CASE("seed 003 erratum: the printed t = -(<N,L>+d)/<N,(P-L)t> has a stray t", "[shadow][seed003][erratum]") {
+TEST_CASE("seed 003 erratum (no matrix): the printed t = -(<N,L>+d)/<N,(P-L)t> has a stray t", "[shadow][seed003][erratum]") {
   // Light L = (0,2,0), point V = (0,1,0), plane y = 0. The ray L + (V - L) t meets y = 0 at
   // t = 2 (hand: 2 - t = 0). The corrected formula gives it; the printed one, evaluated at the
   // true t, gives -(2)/(<N, V - L>·2) = -2/(-2) = 1 ≠ 2.

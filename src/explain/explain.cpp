@@ -1,20 +1,22 @@
+// Shared helpers of the explanations, the text layout, and the explanations of the normal matrix
+// and of a change of basis.
 #include "shadowproof/explain/explain.h"
 
 #include <algorithm>
 #include <sstream>
 
+#include "explain_detail.h"
+#include "shadowproof/constructions/basis.h"
+#include "shadowproof/constructions/normal_matrix.h"
 #include "shadowproof/core/error.h"
 
 namespace shadowproof {
 
-namespace {
+namespace detail {
 
 std::string str(const rational& q) { return to_string(q); }
 
-// A factor in a product: negative numbers and fractions get brackets, "(-2)·(1/3)".
-std::string factor(const rational& q) {
-  return q < 0 || q.get_den() != 1 ? "(" + str(q) + ")" : str(q);
-}
+std::string factor(const rational& q) { return q < 0 || q.get_den() != 1 ? "(" + str(q) + ")" : str(q); }
 
 std::string list_text(const std::vector<rational>& v) {
   std::string s = "(";
@@ -24,9 +26,12 @@ std::string list_text(const std::vector<rational>& v) {
 
 std::string vec_text(const vec4<rational>& v) { return list_text(std::vector<rational>(v.v.begin(), v.v.end())); }
 
+std::string point_text(const point3& p) { return list_text({p[0], p[1], p[2]}); }
+
 std::vector<rational> xyz(const vec4<rational>& v) { return {v[0], v[1], v[2]}; }
 
-// "a0·b0 + a1·b1 + ... = value" over the first `count` coordinates.
+point3 xyz3(const vec4<rational>& v) { return {v[0], v[1], v[2]}; }
+
 std::string dot_text(const vec4<rational>& a, const vec4<rational>& b, std::size_t count) {
   std::string s;
   rational sum = 0;
@@ -37,7 +42,6 @@ std::string dot_text(const vec4<rational>& a, const vec4<rational>& b, std::size
   return s + " = " + str(sum);
 }
 
-// Rows of an aligned matrix, the layout `shadowproof shadow` uses.
 std::vector<std::string> matrix_lines(const std::vector<std::vector<rational>>& rows) {
   std::size_t width = 0;
   for (const auto& row : rows)
@@ -60,285 +64,130 @@ std::vector<std::string> matrix_lines(const mat4<rational>& m) {
   return matrix_lines(rows);
 }
 
-explanation_step text_step(std::string why, std::vector<std::string> lines = {}) {
+explanation_step text_step(std::string why, std::vector<std::string> lines) {
   return {std::move(why), std::move(lines), std::nullopt};
 }
 
-explanation_step matrix_step(std::string why, const mat4<rational>& m, std::vector<std::string> lines = {}) {
+explanation_step matrix_step(std::string why, const mat4<rational>& m, std::vector<std::string> lines) {
   return {std::move(why), std::move(lines), m};
 }
 
 std::string holds(bool ok) { return ok ? "holds" : "FAILS"; }
 
-// Breaks a sentence into lines of at most `width` characters (counting UTF-8 code points) after
-// the first line's `prefix`; continuation lines are indented by as many spaces.
-std::string wrap(const std::string& text, const std::string& prefix, std::size_t width = 96) {
-  const auto length = [](const std::string& s) {
-    std::size_t n = 0;
-    for (unsigned char ch : s) n += (ch & 0xC0) != 0x80;
-    return n;
-  };
-  const std::string indent(length(prefix), ' ');
-  std::istringstream words(text);
-  std::string word, line = prefix, out;
-  bool empty = true;
-  while (words >> word) {
-    if (!empty && length(line) + 1 + length(word) > width) {
-      out += line + '\n';
-      line = indent;
-      empty = true;
-    }
-    line += (empty ? "" : " ") + word;
-    empty = false;
-  }
-  return out + line + '\n';
+point3 affine_point(const vec4<rational>& v) { return {v[0] / v[3], v[1] / v[3], v[2] / v[3]}; }
+
+std::string projected_line(const std::string& name, const mat4<rational>& M, const vec4<rational>& X) {
+  const vec4<rational> image = M * X;
+  std::string line = name + " " + vec_text(X) + " = " + vec_text(image);
+  if (image[3] == 0) return line + ": w = 0, a point at infinity";
+  return line + ", NDC " + point_text(affine_point(image));
 }
 
-}  // namespace
+point3 add(const point3& a, const point3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
+point3 sub(const point3& a, const point3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+point3 scale(const rational& s, const point3& a) { return {s * a[0], s * a[1], s * a[2]}; }
+rational dot3(const point3& a, const point3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+point3 cross(const point3& a, const point3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+rational max_norm(const point3& a) { return std::max({abs(a[0]), abs(a[1]), abs(a[2])}); }
+point3 with_length(const point3& a, const rational& length) { return scale(length / max_norm(a), a); }
 
-// =============================================================================================
-// Shadow
-
-explanation explain_shadow(const plane<rational>& P, const light<rational>& L,
-                           const std::vector<vec4<rational>>& points) {
-  explanation e;
-  e.title = "Shadow matrix for the plane P = " + vec_text(P.p) + " and the light L = " + vec_text(L.l);
-  const std::string light_text =
-      L.is_directional() ? "a directional light; (x, y, z) = " + list_text(xyz(L.l)) + " points towards it"
-                         : "a point light at " + list_text({L.l[0] / L.l[3], L.l[1] / L.l[3], L.l[2] / L.l[3]});
-  e.steps.push_back(text_step(
-      "The receiver is the set of points X with P·X = 0; the light is " + light_text + ".",
-      {"P = " + vec_text(P.p), "L = " + vec_text(L.l)}));
-
-  const rational s = dot(P.p, L.l);
-  e.steps.push_back(text_step(
-      "The line through a point V and the light is V + kL. It meets the plane where "
-      "P·(V + kL) = P·V + k (P·L) = 0, so everything depends on P·L:",
-      {"P·L = " + dot_text(P.p, L.l, 4)}));
-  if (s != 0) {
-    e.steps.push_back(text_step(
-        "P·L ≠ 0, so k = −(P·V)/(P·L) and the shadow of V is V − (P·V)/(P·L) L. Multiplied by P·L "
-        "(a homogeneous vector and its multiples are the same point) it is (P·L) V − (P·V) L = "
-        "((P·L) I − L Pᵀ) V: the shadow matrix is M = (P·L) I − L Pᵀ."));
-  } else {
-    e.steps.push_back(text_step(
-        std::string("P·L = 0: ") +
-        (L.is_directional() ? "the light is parallel to the plane" : "the light lies on the plane") +
-        ". No k solves the equation for a point off the plane; M = (P·L) I − L Pᵀ = −L Pᵀ still "
-        "holds but has rank 1: every point off the plane maps to the light itself."));
-  }
-  const mat4<rational> sI = s * identity4<rational>();
-  const mat4<rational> LP = outer(L.l, P.p);
-  e.steps.push_back(matrix_step("(P·L) I, with P·L = " + str(s) + ":", sI));
-  e.steps.push_back(matrix_step("L Pᵀ: row i is L_i times P = " + vec_text(P.p) + ":", LP));
-  const mat4<rational> M = sI - LP;
-  e.steps.push_back(matrix_step("M = (P·L) I − L Pᵀ:", M));
-
-  vec4<rational> PM;
-  for (std::size_t j = 0; j < 4; ++j)
-    for (std::size_t i = 0; i < 4; ++i) PM[j] += P.p[i] * M(i, j);
-  e.steps.push_back(text_step(
-      "Every image lies on the plane: Pᵀ M = (P·L) Pᵀ − (P·L) Pᵀ = 0, so P·(M V) = 0 for every V.",
-      {"Pᵀ M = " + vec_text(PM) + " (" + holds(is_zero(PM)) + ")"}));
-
-  for (const auto& V : points) {
-    std::vector<std::string> lines;
-    const rational t = dot(P.p, V);
-    lines.push_back("P·V = " + dot_text(P.p, V, 4));
-    if (s != 0) {
-      const rational k = -t / s;
-      lines.push_back("k = −(P·V)/(P·L) = −(" + str(t) + ")/(" + str(s) + ") = " + str(k));
-      lines.push_back("V + kL = " + vec_text(V + k * L.l));
-    }
-    const vec4<rational> image = M * V;
-    lines.push_back("M V = (P·L) V − (P·V) L = " + str(s) + "·" + vec_text(V) + " − " + factor(t) + "·" +
-                    vec_text(L.l) + " = " + vec_text(image));
-    if (image[3] != 0)
-      lines.push_back("affine image (x/w, y/w, z/w) = " +
-                      list_text({image[0] / image[3], image[1] / image[3], image[2] / image[3]}));
-    else
-      lines.push_back(is_zero(image) ? "M V = 0: no point (V and the light span a line in the plane, or V is the light)"
-                                     : "w = 0: the image is a point at infinity");
-    e.steps.push_back(text_step("The point V = " + list_text(xyz(V)) + ":", lines));
-  }
-  e.result_name = "shadow matrix M = (P·L) I − L Pᵀ (image = M V), as `shadowproof shadow` prints it";
-  e.result = M;
-  return e;
+point3 foot_on_plane(const point3& n, const rational& d, const point3& p) {
+  return sub(p, scale((dot3(n, p) + d) / dot3(n, n), n));
 }
 
-// =============================================================================================
-// Reflection
-
-explanation explain_reflection(const plane<rational>& P) {
-  explanation e;
-  e.title = "Reflection matrix for the mirror P = " + vec_text(P.p);
-  const rational &a = P.a(), &b = P.b(), &c = P.c(), &d = P.d();
-  e.steps.push_back(text_step("The mirror is n·X + d = 0 with n = (a, b, c), not normalised:",
-                              {"n = " + list_text({a, b, c}) + ", d = " + str(d)}));
-  const rational nn = dot3(P.p, P.p);
-  e.steps.push_back(text_step("Its squared length:", {"n·n = " + dot_text(P.p, P.p, 3)}));
-  e.steps.push_back(text_step(
-      "The image of X walks along n twice the signed distance: X' = X − 2 (n·X + d)/(n·n) n. That "
-      "is affine in X, so X' = M X with M = [I − 2nnᵀ/(n·n), −2dn/(n·n); 0 0 0 1]."));
-  std::vector<std::vector<rational>> nnT(3, std::vector<rational>(3));
-  for (std::size_t i = 0; i < 3; ++i)
-    for (std::size_t j = 0; j < 3; ++j) nnT[i][j] = P.p[i] * P.p[j];
-  e.steps.push_back(text_step("n nᵀ:", matrix_lines(nnT)));
-  const rational scale = rational(2) / nn;
-  std::vector<std::vector<rational>> A(3, std::vector<rational>(3));
-  for (std::size_t i = 0; i < 3; ++i)
-    for (std::size_t j = 0; j < 3; ++j) A[i][j] = (i == j ? rational(1) : rational(0)) - scale * nnT[i][j];
-  std::vector<std::string> lines{"2/(n·n) = " + str(scale)};
-  for (const auto& l : matrix_lines(A)) lines.push_back(l);
-  e.steps.push_back(text_step("The linear part I − 2nnᵀ/(n·n):", lines));
-  const std::vector<rational> shift{-scale * d * a, -scale * d * b, -scale * d * c};
-  e.steps.push_back(text_step("The translation −2d n/(n·n):", {"−2d n/(n·n) = " + list_text(shift)}));
-  mat4<rational> M = identity4<rational>();
-  for (std::size_t i = 0; i < 3; ++i) {
-    for (std::size_t j = 0; j < 3; ++j) M(i, j) = A[i][j];
-    M(i, 3) = shift[i];
+std::vector<point3> plane_patch(const point3& n, const rational& d, const point3& centre, const std::vector<point3>& keep) {
+  // The coordinate axis least aligned with n gives a direction not parallel to it.
+  std::size_t least = 0;
+  for (std::size_t i = 1; i < 3; ++i)
+    if (abs(n[i]) < abs(n[least])) least = i;
+  point3 e{0, 0, 0};
+  e[least] = 1;
+  const point3 u = cross(n, e), v = cross(n, u);
+  rational a = 0, b = 0;
+  for (const auto& k : keep) {
+    const point3 rel = sub(foot_on_plane(n, d, k), centre);
+    a = std::max(a, rational(abs(dot3(rel, u) / dot3(u, u))));
+    b = std::max(b, rational(abs(dot3(rel, v) / dot3(v, v))));
   }
-  e.steps.push_back(matrix_step("M:", M));
-  e.steps.push_back(text_step("Checks: a reflection undone is the identity, and it reverses orientation.",
-                              {"M M = I (" + holds(M * M == identity4<rational>()) + ")",
-                               "det M = " + str(determinant(M))}));
-  e.result_name = "reflection matrix M, as `shadowproof reflect` prints it";
-  e.result = M;
-  return e;
+  // A margin of a quarter of the extent, and at least one unit of length along each direction.
+  a = a * rational(5, 4) + rational(1) / max_norm(u);
+  b = b * rational(5, 4) + rational(1) / max_norm(v);
+  const auto corner = [&](int sa, int sb) { return add(centre, add(scale(sa * a, u), scale(sb * b, v))); };
+  return {corner(1, 1), corner(-1, 1), corner(-1, -1), corner(1, -1)};
 }
 
-// =============================================================================================
-// Perspective normalisation N(α, β)
-
-explanation explain_perspective_normalization(const rational& n, const rational& f) {
-  detail::require_distinct(n, f, "near", "far", "depth");
-  explanation e;
-  e.title = "Perspective normalisation N(α, β) for near = " + str(n) + ", far = " + str(f);
-  e.steps.push_back(text_step(
-      "N = [1 0 0 0; 0 1 0 0; 0 0 α β; 0 0 −1 0] maps (x, y, z, 1) to (x, y, αz + β, −z); after "
-      "division by w the depth is (αz + β)/(−z). The 45° frustum lies between z = −n and z = −f."));
-  e.steps.push_back(text_step(
-      "The near plane z = −n must go to depth −1: (−nα + β)/n = −1, i.e. −nα + β = −n:",
-      {factor(-n) + "·α + β = " + str(-n)}));
-  e.steps.push_back(text_step("The far plane z = −f must go to depth +1: −fα + β = f:",
-                              {factor(-f) + "·α + β = " + str(f)}));
-  const rational det = -n - (-f);
-  e.steps.push_back(text_step(
-      "The system [−n 1; −f 1] (α, β) = (−n, f) has determinant f − n, non-zero since the planes differ:",
-      {"det = " + factor(-n) + "·1 − 1·" + factor(-f) + " = " + str(det)}));
-  const rational alpha = (-n - f) / det;
-  const rational beta = ((-n) * f - (-n) * (-f)) / det;
-  e.steps.push_back(text_step(
-      "Cramer's rule: α = ((−n)·1 − 1·f)/(f − n), β = ((−n)·f − (−n)·(−f))/(f − n); these are the seed's "
-      "α = (n+f)/(n−f) and β = 2nf/(n−f):",
-      {"α = (" + factor(-n) + " − " + factor(f) + ")/" + factor(det) + " = " + str(alpha),
-       "β = (" + factor(-n) + "·" + factor(f) + " − " + factor(-n) + "·" + factor(-f) + ")/" + factor(det) +
-           " = " + str(beta)}));
-  mat4<rational> N = identity4<rational>();
-  N(2, 2) = alpha;
-  N(2, 3) = beta;
-  N(3, 2) = -1;
-  N(3, 3) = 0;
-  e.steps.push_back(matrix_step("N:", N));
-  const vec4<rational> near_image = N * make_point<rational>(0, 0, -n);
-  const vec4<rational> far_image = N * make_point<rational>(0, 0, -f);
-  std::vector<std::string> checks;
-  const auto check_line = [](const std::string& name, const rational& depth, const vec4<rational>& image,
-                             const rational& expected) {
-    std::string line = name + ": N (0, 0, " + str(depth) + ", 1) = " + vec_text(image);
-    if (image[3] != 0)
-      return line + ", depth " + str(image[2] / image[3]) + " (" + holds(image[2] / image[3] == expected) + ")";
-    return line + ": w = 0, the plane passes through the eye";
-  };
-  checks.push_back(check_line("near", -n, near_image, -1));
-  checks.push_back(check_line("far", -f, far_image, 1));
-  e.steps.push_back(text_step("Check both conditions:", checks));
-  e.result_name = "N(α, β), as perspective_normalization(n, f) in shadowproof/constructions/project.h builds it";
-  e.result = N;
-  return e;
+std::array<point3, 8> box_corners(const rational& x0, const rational& x1, const rational& y0, const rational& y1,
+                                  const rational& z0, const rational& z1) {
+  std::array<point3, 8> c;
+  for (int i = 0; i < 8; ++i) c[i] = {(i & 1) ? x1 : x0, (i & 2) ? y1 : y0, (i & 4) ? z1 : z0};
+  return c;
 }
 
-// =============================================================================================
-// Frustum
+std::array<rational, 2> ndc_depth_span(depth_convention c) {
+  return c == depth_convention::gl ? std::array<rational, 2>{-1, 1} : std::array<rational, 2>{0, 1};
+}
 
-explanation explain_frustum(const rational& l, const rational& r, const rational& b, const rational& t,
-                           const rational& n, const rational& f, depth_convention c, bool infinite_far) {
-  (void)frustum(l, r, b, t, n, f, c, infinite_far);  // the same preconditions and error messages
-  const depth_range<rational> z = ndc_depth_range<rational>(c);
-  explanation e;
-  e.title = "Perspective frustum [" + str(l) + ", " + str(r) + "] x [" + str(b) + ", " + str(t) +
-            "], near " + str(n) + ", far " + (infinite_far ? std::string("infinite") : str(f)) +
-            ", convention " + std::string(to_string(c));
-  e.steps.push_back(text_step(
-      "The eye looks down −z; the window [l, r] x [b, t] lies on the near plane z = −n. In this "
-      "convention the near plane goes to depth z_near and the far plane to z_far:",
-      {"z_near = " + str(z.near_ndc) + ", z_far = " + str(z.far_ndc)}));
-  e.steps.push_back(text_step(
-      "A point (x, y, z) in front of the eye (z < 0) is seen where its ray meets the near plane, at "
-      "x_n = n x/(−z), y_n = n y/(−z). The division by −z is the division by w: the last row is "
-      "(0, 0, −1, 0)."));
-  const rational sx = 2 * n / (r - l), ox = (r + l) / (r - l);
-  const rational sy = 2 * n / (t - b), oy = (t + b) / (t - b);
-  e.steps.push_back(text_step(
-      "The window maps onto [−1, 1]: x_ndc = 2 (x_n − l)/(r − l) − 1 = (2n/(r−l) x + (r+l)/(r−l) z)/(−z), "
-      "and the same for y:",
-      {"2n/(r−l) = " + str(sx) + ", (r+l)/(r−l) = " + str(ox),
-       "2n/(t−b) = " + str(sy) + ", (t+b)/(t−b) = " + str(oy)}));
-  rational A, B;
-  if (!infinite_far) {
-    A = (n * z.near_ndc - f * z.far_ndc) / (f - n);
-    B = n * z.near_ndc + n * A;
-    e.steps.push_back(text_step(
-        "Depth is (A z + B)/(−z). Near z = −n → z_near: −nA + B = n z_near; far z = −f → z_far: "
-        "−fA + B = f z_far. Subtracting, A = (n z_near − f z_far)/(f − n), then B = n z_near + nA:",
-        {"−" + factor(n) + "·A + B = " + str(n * z.near_ndc) + ", −" + factor(f) + "·A + B = " +
-             str(f * z.far_ndc),
-         "A = (" + factor(n) + "·" + factor(z.near_ndc) + " − " + factor(f) + "·" + factor(z.far_ndc) + ")/(" +
-             str(f - n) + ") = " + str(A),
-         "B = " + factor(n) + "·" + factor(z.near_ndc) + " + " + factor(n) + "·" + factor(A) + " = " + str(B)}));
-  } else {
-    A = -z.far_ndc;
-    B = n * (z.near_ndc - z.far_ndc);
-    e.steps.push_back(text_step(
-        "Depth is (A z + B)/(−z). Near z = −n → z_near gives −nA + B = n z_near; letting the far plane "
-        "go to infinity, (A z + B)/(−z) → −A must be z_far. So A = −z_far and B = n (z_near − z_far):",
-        {"A = " + str(A), "B = " + factor(n) + "·(" + str(z.near_ndc) + " − " + factor(z.far_ndc) + ") = " + str(B)}));
+figure_panel canonical_panel(depth_convention c, const mat4<rational>& M, const std::vector<vec4<rational>>& points,
+                             const std::string& title) {
+  figure_panel panel;
+  panel.title = title;
+  const depth_range<rational> near_far = ndc_depth_range<rational>(c);
+  // The near plane in front: +z recedes when the far plane has the larger depth.
+  panel.view = near_far.far_ndc > near_far.near_ndc ? figure_view::depth : figure_view::front;
+  const auto z = ndc_depth_span(c);
+  panel.hexahedron(box_corners(-1, 1, -1, 1, z[0], z[1]), figure_style::canonical);
+  const depth_range<rational> planes = ndc_depth_range<rational>(c);
+  panel.dot({0, 0, planes.near_ndc}, figure_style::axis, "near z = " + str(planes.near_ndc));
+  panel.dot({0, 0, planes.far_ndc}, figure_style::axis, "far z = " + str(planes.far_ndc));
+  for (const auto& X : points) {
+    const vec4<rational> image = M * X;
+    if (image[3] == 0) continue;
+    const point3 p = affine_point(image);
+    panel.dot(p, in_clip_volume(image, c) ? figure_style::image : figure_style::false_shadow, point_text(p));
   }
-  mat4<rational> M;
-  M(0, 0) = sx;
-  M(0, 2) = ox;
-  M(1, 1) = sy;
-  M(1, 2) = oy;
-  M(2, 2) = A;
-  M(2, 3) = B;
-  M(3, 2) = -1;
-  e.steps.push_back(matrix_step("M:", M));
-  std::vector<std::string> checks;
-  const auto ndc_line = [](const std::string& what, const vec4<rational>& image, const std::vector<rational>& expected) {
-    const std::vector<rational> ndc{image[0] / image[3], image[1] / image[3], image[2] / image[3]};
-    return what + " -> " + vec_text(image) + ", NDC " + list_text(ndc) + " (" + holds(ndc == expected) + ")";
-  };
-  checks.push_back(ndc_line("near corner (l, b, −n) = " + list_text({l, b, -n}), M * make_point<rational>(l, b, rational(-n)),
-                            {rational(-1), rational(-1), z.near_ndc}));
-  if (!infinite_far) {
-    const vec4<rational> corner = make_point<rational>(r * f / n, t * f / n, -f);
-    checks.push_back(ndc_line("far corner (rf/n, tf/n, −f) = " + list_text(xyz(corner)), M * corner,
-                              {rational(1), rational(1), z.far_ndc}));
-  } else {
-    const vec4<rational> direction = make_vec4<rational>(r / n, t / n, -1, 0);
-    checks.push_back(ndc_line("direction (r/n, t/n, −1, 0) = " + vec_text(direction), M * direction,
-                              {rational(1), rational(1), z.far_ndc}));
+  return panel;
+}
+
+}  // namespace detail
+
+using namespace detail;
+
+std::string_view meaning_of(point_class c) {
+  switch (c) {
+    case point_class::on_receiver: return "on the receiver: the point is its own shadow";
+    case point_class::shadow: return "a real shadow: the point lies between the light and the receiver";
+    case point_class::behind_receiver:
+      return "a false shadow: the point is behind the receiver, so no light reaches that image through it";
+    case point_class::beyond_light:
+      return "an anti-shadow: the point is farther from the receiver than the light, and its image lies on the "
+             "far side of the light";
+    case point_class::at_infinity:
+      return "at infinity: the line from the light through the point is parallel to the receiver";
+    case point_class::at_light: return "the light itself: its image is the zero vector, no point";
+    case point_class::light_on_plane: return "the light lies on the receiver: every such point maps to the light";
+    case point_class::light_parallel:
+      return "the light is parallel to the receiver: every such point maps to the light's direction, at infinity";
+    case point_class::line_in_plane:
+      return "the line to the light lies in the receiver: the matrix gives no image (the point, on the receiver, "
+             "is its own shadow)";
   }
-  e.steps.push_back(text_step("Check opposite corners of the view volume:", checks));
-  e.result_name = "frustum matrix M, as `shadowproof project frustum` prints it";
-  e.result = M;
-  return e;
+  return "unknown";
+}
+
+cot_sign parse_cot_sign(std::string_view text) {
+  if (text == "minus") return cot_sign::minus;
+  if (text == "plus") return cot_sign::plus;
+  throw error(errc::explain_cot_sign,
+              "unknown --cot-sign '" + std::string(text) + "': expected minus (H has -cot, the library's oblique_shear) "
+              "or plus (H has +cot, with tan(theta) = z/(x_p - x))");
 }
 
 // =============================================================================================
 // Normal matrix
 
-explanation explain_normal_matrix(const mat4<rational>& M) {
+explanation explain_normal_matrix(const mat4<rational>& M, const std::vector<vec4<rational>>& normals) {
   explanation e;
   e.title = "Normal matrix G = (M⁻¹)ᵀ";
   e.steps.push_back(matrix_step(
@@ -375,13 +224,152 @@ explanation explain_normal_matrix(const mat4<rational>& M) {
     e.steps.push_back(text_step(
         "M is affine (last row 0 0 0 1), so on a normal (n, 0) only the upper-left 3x3 of G acts: it is "
         "the shaders' 3x3 normal matrix (A⁻¹)ᵀ of the linear part A."));
+
+  // The figure follows a normal and a tangent perpendicular to it.
+  std::vector<vec4<rational>> shown = normals;
+  if (shown.empty()) shown.push_back(make_vec4<rational>(1, 1, 0, 0));
+  for (const auto& n : normals) {
+    const vec4<rational> Gn = G * n, Mn = M * n;
+    e.steps.push_back(text_step(
+        "The normal n = " + list_text(xyz(n)) + ":",
+        {"G n = " + list_text(xyz(Gn)), "M n = " + list_text(xyz(Mn)) + (proportional(Gn, Mn) || (is_zero(Gn) && is_zero(Mn))
+                                                                              ? " (the same direction: M keeps normals here)"
+                                                                              : " (a different direction: M would tilt this normal)")}));
+  }
+  figure_panel before, after;
+  before.title = "before: tangent t ⟂ normal n";
+  after.title = "after: M t ⟂ G n, but not M n";
+  const point3 origin{0, 0, 0};
+  const point3 n3 = xyz3(shown.front());
+  // A tangent: perpendicular to n, from n × e for the axis e least aligned with n.
+  std::size_t least = 0;
+  for (std::size_t i = 1; i < 3; ++i)
+    if (abs(n3[i]) < abs(n3[least])) least = i;
+  point3 axis{0, 0, 0};
+  axis[least] = 1;
+  const point3 t3 = cross(n3, axis);
+  if (max_norm(n3) != 0 && max_norm(t3) != 0) {
+    for (figure_panel* p : {&before, &after})
+      for (int k = 0; k < 3; ++k) {
+        point3 a{0, 0, 0};
+        a[k] = 1;
+        p->segment(origin, a, figure_style::axis, k == 0 ? "x" : (k == 1 ? "y" : "z"));
+      }
+    before.arrow(origin, with_length(n3, 1), figure_style::normal, "n = " + point_text(n3));
+    before.arrow(origin, with_length(t3, 1), figure_style::tangent, "t = " + point_text(t3));
+    const vec4<rational> t4 = make_vec4<rational>(t3[0], t3[1], t3[2], 0);
+    const point3 Mt = xyz3(M * t4), Gn = xyz3(G * shown.front()), Mn = xyz3(M * shown.front());
+    if (max_norm(Mt) != 0) after.arrow(origin, with_length(Mt, 1), figure_style::tangent, "M t = " + point_text(Mt));
+    if (max_norm(Gn) != 0) after.arrow(origin, with_length(Gn, 1), figure_style::normal, "G n = " + point_text(Gn));
+    if (max_norm(Mn) != 0 && !proportional(M * shown.front(), G * shown.front()))
+      after.arrow(origin, with_length(Mn, 1), figure_style::wrong, "M n = " + point_text(Mn));
+    e.picture.title = "Normals transform by G = (M⁻¹)ᵀ";
+    e.picture.panels = {before, after};
+    e.picture.caption = "the normal $n = " + point_text(n3) + "$ and the tangent $t = " + point_text(t3) +
+                        "$ before and after the map: $G n$ stays perpendicular to $M t$" +
+                        (proportional(M * shown.front(), G * shown.front()) ? "." : ", $M n$ (dashed) does not.");
+  }
   e.result_name = "normal matrix G = (M⁻¹)ᵀ, as `shadowproof normal-matrix` prints it";
   e.result = G;
   return e;
 }
 
 // =============================================================================================
+// Change of basis
+
+explanation explain_change_of_basis(const std::array<rational, 3>& x_axis, const std::array<rational, 3>& y_axis,
+                                    const std::array<rational, 3>& z_axis, const std::array<rational, 3>& origin,
+                                    const std::vector<vec4<rational>>& points) {
+  explanation e;
+  e.title = "Change of basis: child axes X_c = " + point_text(x_axis) + ", Y_c = " + point_text(y_axis) +
+            ", Z_c = " + point_text(z_axis) + ", origin O_c = " + point_text(origin);
+  e.steps.push_back(text_step(
+      "A child point with coordinates (a, b, c) is O_c + a X_c + b Y_c + c Z_c in the parent: the matrix with "
+      "the columns X_c, Y_c, Z_c, O_c maps (a, b, c, 1) to it, and a direction (a, b, c, 0) ignores O_c."));
+  const mat4<rational> M = child_to_parent(x_axis, y_axis, z_axis, origin);
+  e.steps.push_back(matrix_step("Child → parent, M_c→p:", M));
+  const rational det = determinant(M);
+  e.steps.push_back(text_step("Its determinant (the volume of the three axes):", {"det M_c→p = " + str(det)}));
+  const mat4<rational> inverse_matrix = inverse(M);  // throws matrix.singular for dependent axes
+  e.steps.push_back(matrix_step("Parent → child is the inverse, M_p→c = adj(M)/det M:", inverse_matrix,
+                                {"M_c→p M_p→c = I (" + holds(M * inverse_matrix == identity4<rational>()) + ")"}));
+  const mat4<rational> shortcut = parent_to_child_orthonormal(x_axis, y_axis, z_axis, origin);
+  if (is_orthonormal(x_axis, y_axis, z_axis)) {
+    e.steps.push_back(matrix_step(
+        "The axes are orthonormal (X·X = Y·Y = Z·Z = 1, X·Y = Y·Z = Z·X = 0, exactly), so the 3x3 part of the "
+        "inverse is its transpose: seed 004's shortcut, rows X_c, Y_c, Z_c and the column −(X_c·O_c, Y_c·O_c, "
+        "Z_c·O_c):",
+        shortcut, {"equals the inverse (" + holds(shortcut == inverse_matrix) + ")"}));
+  } else {
+    e.steps.push_back(text_step(
+        "The axes are not orthonormal, so the transpose is not the inverse: seed 004's shortcut (rows X_c, Y_c, "
+        "Z_c) would give a different matrix.",
+        {"shortcut = inverse: " + std::string(shortcut == inverse_matrix ? "yes" : "no")}));
+  }
+  figure_panel panel;
+  panel.title = "parent axes (grey) and the child frame (green)";
+  const point3 o{0, 0, 0};
+  for (int k = 0; k < 3; ++k) {
+    point3 a{0, 0, 0};
+    a[k] = 1;
+    panel.arrow(o, a, figure_style::axis, k == 0 ? "x" : (k == 1 ? "y" : "z"));
+  }
+  panel.arrow(origin, add(origin, x_axis), figure_style::frame_axis, "X_c");
+  panel.arrow(origin, add(origin, y_axis), figure_style::frame_axis, "Y_c");
+  panel.arrow(origin, add(origin, z_axis), figure_style::frame_axis, "Z_c");
+  panel.dot(origin, figure_style::point, "O_c = " + point_text(origin));
+  for (const auto& X : points) {
+    const vec4<rational> parent = M * X;
+    e.steps.push_back(text_step("The child point (a, b, c) = " + list_text(xyz(X)) + ":",
+                                {"M_c→p (a, b, c, 1) = " + vec_text(parent),
+                                 "back: M_p→c " + vec_text(parent) + " = " + vec_text(inverse_matrix * parent)}));
+    const point3 step1 = add(origin, scale(X[0], x_axis)), step2 = add(step1, scale(X[1], y_axis)),
+                 step3 = add(step2, scale(X[2], z_axis));
+    panel.segment(origin, step1, figure_style::walk);
+    panel.segment(step1, step2, figure_style::walk);
+    panel.segment(step2, step3, figure_style::walk);
+    panel.dot(step3, figure_style::image, "child " + list_text(xyz(X)) + " = parent " + point_text(step3));
+  }
+  e.picture.title = "Change of basis";
+  e.picture.panels = {panel};
+  e.picture.caption = "the child frame with origin $O_c = " + point_text(origin) + "$ and axes $X_c = " +
+                      point_text(x_axis) + "$, $Y_c = " + point_text(y_axis) + "$, $Z_c = " + point_text(z_axis) +
+                      "$ in the parent's axes" + (points.empty() ? "" : "; each child point is reached by walking from $O_c$ along the axes (dashed)") + ".";
+  e.result_name = "child → parent matrix M_c→p (columns X_c, Y_c, Z_c, O_c), as child_to_parent builds it";
+  e.result = M;
+  return e;
+}
+
+// =============================================================================================
 // Text
+
+namespace {
+
+// Breaks a sentence into lines of at most `width` characters (counting UTF-8 code points) after
+// the first line's `prefix`; continuation lines are indented by as many spaces.
+std::string wrap(const std::string& text, const std::string& prefix, std::size_t width = 96) {
+  const auto length = [](const std::string& s) {
+    std::size_t n = 0;
+    for (unsigned char ch : s) n += (ch & 0xC0) != 0x80;
+    return n;
+  };
+  const std::string indent(length(prefix), ' ');
+  std::istringstream words(text);
+  std::string word, line = prefix, out;
+  bool empty = true;
+  while (words >> word) {
+    if (!empty && length(line) + 1 + length(word) > width) {
+      out += line + '\n';
+      line = indent;
+      empty = true;
+    }
+    line += (empty ? "" : " ") + word;
+    empty = false;
+  }
+  return out + line + '\n';
+}
+
+}  // namespace
 
 std::string to_text(const explanation& e) {
   std::ostringstream out;

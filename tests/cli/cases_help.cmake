@@ -14,7 +14,7 @@ shadowproof_cli_case(NAME "help --all covers every command"
   STDOUT_REGEX "Subcommands:.*Usage: shadowproof explain shadow.*--plane.*Usage: shadowproof help.*--bash-completion.*Usage: shadowproof project.*--convention")
 shadowproof_cli_case(NAME "help of an unknown command names the commands there are"
   ARGS help explain shade EXPECT_CODE 2 STDOUT_EMPTY
-  STDERR_REGEX "^shadowproof: \\[shadowproof\\.cli\\.unknown_command\\] no command 'shadowproof explain shade' \\(one of: normal-matrix, perspective, reflect, shadow\\)\n$")
+  STDERR_REGEX "^shadowproof: \\[shadowproof\\.cli\\.unknown_command\\] no command 'shadowproof explain shade' \\(one of: change-of-basis, games101, normal-matrix, oblique, ortho, perspective, reflect, reflect-frames, shadow\\)\n$")
 
 foreach(kind man bash-completion)
   set(committed ${PROJECT_SOURCE_DIR}/src/cli/shadowproof.1)
