@@ -4,12 +4,18 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <random>
 #include <sstream>
+
+#include "shadowproof/clip/generate_scene.h"
 
 #include "shadowproof/clip/shadow_region.h"
 #include "shadowproof/constructions/reflect.h"
 #include "shadowproof/clip/svg.h"
+#include "shadowproof/core/error.h"
 
 using namespace shadowproof;
 
@@ -641,4 +647,140 @@ TEST_CASE("caster lying on the receiver under an oblique light shades its own fo
   const auto r = compute_shadow_region(make_scene(dir(1, 0, 1), {polygon_caster({p3(1, 1, 0), p3(5, 1, 0), p3(1, 4, 0)})}));
   CHECK(r.chart_area == 6);
   CHECK(r.has(shadow_case::caster_in_receiver_plane));
+}
+
+// --- the silhouette builder against the union-of-pieces reference ---------------------------
+
+namespace {
+
+struct mt_source {
+  std::mt19937_64 rng;
+  std::uint64_t below(std::uint64_t n) { return n <= 1 ? 0 : std::uniform_int_distribution<std::uint64_t>(0, n - 1)(rng); }
+};
+
+// The scene as JSON, for reproducing a failure with `shadowproof clip`.
+std::string scene_json(const scene& s) {
+  std::ostringstream o;
+  const auto point = [&](const point3& p) { o << "[\"" << to_string(p[0]) << "\",\"" << to_string(p[1]) << "\",\"" << to_string(p[2]) << "\"]"; };
+  const auto ring = [&](const std::vector<point3>& r) {
+    o << "[";
+    for (std::size_t i = 0; i < r.size(); ++i) {
+      if (i) o << ",";
+      point(r[i]);
+    }
+    o << "]";
+  };
+  o << "{\"receiver\": {\"polygon\": ";
+  ring(s.receiver.outer.vertices);
+  o << ", \"holes\": [";
+  for (std::size_t h = 0; h < s.receiver.holes.size(); ++h) {
+    if (h) o << ",";
+    ring(s.receiver.holes[h].vertices);
+  }
+  o << "]}, \"light\": [";
+  for (int k = 0; k < 4; ++k) o << (k ? "," : "") << "\"" << to_string(s.light_source.l[static_cast<std::size_t>(k)]) << "\"";
+  o << "], \"casters\": [";
+  for (std::size_t c = 0; c < s.casters.size(); ++c) {
+    if (c) o << ",";
+    o << "{\"mesh\": {\"vertices\": ";
+    ring(s.casters[c].vertices);
+    o << ", \"faces\": [";
+    for (std::size_t f = 0; f < s.casters[c].faces.size(); ++f) {
+      o << (f ? "," : "") << "[";
+      for (std::size_t k = 0; k < s.casters[c].faces[f].size(); ++k) o << (k ? "," : "") << s.casters[c].faces[f][k];
+      o << "]";
+    }
+    o << "]}}";
+  }
+  o << "]}";
+  return o.str();
+}
+
+// Both builders on one scene: either the same region in every field (polygons in 2D and 3D,
+// areas, zero-area pieces, cases, the picture's projected outlines) or the same error.
+// Returns 1 when a region was compared, 0 when both rejected the scene.
+int compare_builders(const scene& s, const std::string& what) {
+  INFO(what);
+  INFO(scene_json(s));
+  if (const char* dump = std::getenv("CLIP_DUMP")) { std::ofstream(dump) << scene_json(s); }
+  clip_options reference_options, silhouette_options;
+  reference_options.method = clip_method::union_of_pieces;
+  silhouette_options.method = clip_method::silhouette;
+  std::string reference_error, silhouette_error;
+  shadow_region a, b;
+  try {
+    a = compute_shadow_region(s, reference_options);
+  } catch (const error& e) {
+    reference_error = e.what();
+  }
+  try {
+    b = compute_shadow_region(s, silhouette_options);
+  } catch (const error& e) {
+    silhouette_error = e.what();
+  }
+  REQUIRE(silhouette_error == reference_error);
+  if (!reference_error.empty()) return 0;
+  CHECK(b.area_squared == a.area_squared);
+  CHECK(b.chart_area == a.chart_area);
+  REQUIRE(b.polygons.size() == a.polygons.size());
+  for (std::size_t i = 0; i < a.polygons.size(); ++i) {
+    CHECK(b.polygons[i].outer == a.polygons[i].outer);
+    CHECK(b.polygons[i].holes == a.polygons[i].holes);
+    CHECK(b.polygons[i].outer_3d == a.polygons[i].outer_3d);
+    CHECK(b.polygons[i].holes_3d == a.polygons[i].holes_3d);
+  }
+  REQUIRE(b.degenerate.size() == a.degenerate.size());
+  for (std::size_t i = 0; i < a.degenerate.size(); ++i) {
+    CHECK(b.degenerate[i].a == a.degenerate[i].a);
+    CHECK(b.degenerate[i].b == a.degenerate[i].b);
+    CHECK(b.degenerate[i].a_3d == a.degenerate[i].a_3d);
+  }
+  std::vector<std::string> ca, cb;
+  for (auto c : a.cases) ca.emplace_back(to_string(c));
+  for (auto c : b.cases) cb.emplace_back(to_string(c));
+  CHECK(cb == ca);
+  CHECK(b.projected_loops == a.projected_loops);
+  CHECK(b.projected_degenerate == a.projected_degenerate);
+  return 1;
+}
+
+std::vector<std::string> scene_files() {
+  std::vector<std::string> out;
+  for (const char* dir : {"/examples/scenes", "/tests/data/scenes"})
+    for (const auto& e : std::filesystem::directory_iterator(std::string(SHADOWPROOF_SOURCE_DIR) + dir))
+      if (e.path().extension() == ".json") out.push_back(e.path().string());
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("silhouette and union-of-pieces builders give the identical region on every bundled and test scene") {
+  int compared = 0, files = 0;
+  for (const auto& path : scene_files()) {
+    scene s;
+    try {
+      s = read_scene_file(path);
+    } catch (const error&) {
+      continue;  // the malformed scenes of tests/data/scenes fail before any builder runs
+    }
+    ++files;
+    compared += compare_builders(s, path);
+  }
+  compared += compare_builders(make_demo_scene(), "make_demo_scene()");
+  CHECK(files >= 10);
+  CHECK(compared >= 10);
+}
+
+TEST_CASE("silhouette and union-of-pieces builders give the identical region on random meshes and soups") {
+  // SHADOWPROOF_CLIP_SWEEP=N runs N scenes instead of 1200 (docs/clipping.md).
+  std::size_t scenes = 1200;
+  if (const char* n = std::getenv("SHADOWPROOF_CLIP_SWEEP")) scenes = static_cast<std::size_t>(std::stoull(n));
+  mt_source src{std::mt19937_64(20261201)};
+  std::size_t compared = 0;
+  for (std::size_t i = 0; i < scenes; ++i) {
+    const scene s = generate_clip_scene(src);
+    compared += static_cast<std::size_t>(compare_builders(s, "random scene " + std::to_string(i)));
+  }
+  CHECK(compared >= scenes * 7 / 10);  // the rest: random non-simple polygons, rejected alike
 }

@@ -82,6 +82,7 @@ struct clip_args {
   std::string svg_file;
   bool json = false;
   bool compare_float = false;
+  std::string method = "automatic";
   scene_limits limits;  ///< every cap a hostile scene could hit, each raised by its own flag
 };
 
@@ -97,6 +98,11 @@ static const command_registration clip_registration{command{
       app.add_option("--svg", args->svg_file, "write a picture of the region in the receiver's chart");
       app.add_flag("--compare-float", args->compare_float,
                    "also run the float pipeline (float shadow matrix + Sutherland-Hodgman) and report its errors");
+      app.add_option("--method", args->method,
+                     "how the projected faces are combined: automatic, silhouette (boundary chains and winding "
+                     "numbers) or union (the reference: an exact union of every clipped piece); all give the same region")
+          ->check(CLI::IsMember({"automatic", "silhouette", "union"}))
+          ->capture_default_str();
       auto& lim = args->limits;
       app.add_option("--max-vertices", lim.max_vertices, "most caster vertices in a scene")->capture_default_str();
       app.add_option("--max-faces", lim.max_faces, "most caster faces in a scene")->capture_default_str();
@@ -112,6 +118,9 @@ static const command_registration clip_registration{command{
         clip_options options;
         options.limits = limits;
         options.keep_projected = !args->svg_file.empty();
+        options.method = args->method == "union"        ? clip_method::union_of_pieces
+                         : args->method == "silhouette" ? clip_method::silhouette
+                                                        : clip_method::automatic;
         const shadow_region r = compute_shadow_region(s, options);
         if (!args->svg_file.empty()) {
           std::ostringstream svg;

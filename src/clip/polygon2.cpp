@@ -195,22 +195,121 @@ std::vector<point2> canonical_ring(std::vector<point2> ring) {
   return ring;
 }
 
-std::vector<region_polygon> canonical_polygons(
-    std::vector<std::pair<std::vector<point2>, std::vector<std::vector<point2>>>> polygons,
-    const receiver_chart& chart) {
-  auto clean = [](std::vector<point2> ring) {
-    erase_indices(ring, straight_vertices(ring));
-    return canonical_ring(std::move(ring));
+namespace {
+
+// True when the counter-clockwise angle from a to x is smaller than from a to y (angles in
+// [0, 2π), exact: by half-plane, then by the cross product).
+bool ccw_before(const point2& a, const point2& x, const point2& y) {
+  const auto half = [&](const point2& d) {
+    const rational c = a[0] * d[1] - a[1] * d[0];
+    const rational t = a[0] * d[0] + a[1] * d[1];
+    return (sgn(c) > 0 || (sgn(c) == 0 && sgn(t) > 0)) ? 0 : 1;
   };
-  for (auto& p : polygons) {
-    p.first = clean(std::move(p.first));
-    for (auto& h : p.second) h = clean(std::move(h));
-    std::sort(p.second.begin(), p.second.end());
+  const int hx = half(x), hy = half(y);
+  if (hx != hy) return hx < hy;
+  return sgn(x[0] * y[1] - x[1] * y[0]) > 0;
+}
+
+// The boundary of a regular region given by closed walks (region on their left), re-linked
+// into the boundary cycles of its connected open pieces: at a vertex where the boundary
+// touches itself, an incoming edge continues with the outgoing edge first met turning
+// clockwise from it, which keeps to the piece on its left. The cycles do not depend on how
+// the input walks were chosen or where they start.
+std::vector<std::vector<point2>> component_cycles(const std::vector<std::vector<point2>>& walks) {
+  std::map<point2, std::vector<point2>> out_edges;  // vertex -> targets of its outgoing edges
+  std::size_t edges = 0;
+  for (const auto& w : walks)
+    for (std::size_t i = 0; i < w.size(); ++i) {
+      out_edges[w[i]].push_back(w[(i + 1) % w.size()]);
+      ++edges;
+    }
+  // Successor of the edge u -> v.
+  const auto next = [&](const point2& u, const point2& v) -> std::size_t {
+    const auto& targets = out_edges.at(v);
+    if (targets.size() == 1) return 0;
+    const point2 back{u[0] - v[0], u[1] - v[1]};
+    std::size_t best = 0;
+    for (std::size_t k = 1; k < targets.size(); ++k) {
+      const point2 dk{targets[k][0] - v[0], targets[k][1] - v[1]};
+      const point2 db{targets[best][0] - v[0], targets[best][1] - v[1]};
+      if (ccw_before(back, db, dk)) best = k;  // the largest counter-clockwise angle
+    }
+    return best;
+  };
+  std::map<point2, std::vector<bool>> used;
+  for (const auto& [v, targets] : out_edges) used[v].assign(targets.size(), false);
+  std::vector<std::vector<point2>> cycles;
+  std::size_t walked = 0;
+  for (const auto& [v0, targets0] : out_edges)
+    for (std::size_t k0 = 0; k0 < targets0.size(); ++k0) {
+      if (used[v0][k0]) continue;
+      std::vector<point2> cycle;
+      point2 u = v0;
+      std::size_t k = k0;
+      while (!used[u][k]) {
+        used[u][k] = true;
+        if (++walked > edges) throw internal_error("region boundary cycles do not close");
+        cycle.push_back(u);
+        const point2 v = out_edges.at(u)[k];
+        k = next(u, v);
+        u = v;
+      }
+      if (u != v0 || k != k0) throw internal_error("a region boundary cycle does not return to its start");
+      cycles.push_back(std::move(cycle));
+    }
+  return cycles;
+}
+
+// Exact point-in-polygon by the crossing number; q must not lie on the ring's boundary.
+bool inside_ring(const std::vector<point2>& ring, const point2& q) {
+  bool in = false;
+  for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
+    const auto &a = ring[i], &b = ring[j];
+    if (on_segment(a, b, q)) throw internal_error("a hole's test point lies on another boundary");
+    if ((a[1] > q[1]) != (b[1] > q[1])) {
+      const rational x = a[0] + (q[1] - a[1]) * (b[0] - a[0]) / (b[1] - a[1]);
+      if (q[0] < x) in = !in;
+    }
   }
-  std::sort(polygons.begin(), polygons.end());
-  std::vector<region_polygon> out;
-  out.reserve(polygons.size());
+  return in;
+}
+
+}  // namespace
+
+std::vector<region_polygon> canonical_polygons(std::vector<ring_with_holes> polygons, const receiver_chart& chart) {
+  // The boundary cycles of the region's connected open pieces: counter-clockwise ones bound
+  // polygons, clockwise ones holes, each inside the smallest polygon around it. Two pieces
+  // touching at a point are two polygons.
+  std::vector<std::vector<point2>> walks, outers, holes;
   for (auto& p : polygons) {
+    walks.push_back(std::move(p.first));
+    for (auto& h : p.second) walks.push_back(std::move(h));
+  }
+  for (auto& cycle : component_cycles(walks)) {
+    erase_indices(cycle, straight_vertices(cycle));
+    const int orientation = sgn(signed_area(cycle));
+    if (orientation > 0) outers.push_back(canonical_ring(std::move(cycle)));
+    else if (orientation < 0) holes.push_back(canonical_ring(std::move(cycle)));
+    else throw internal_error("a region boundary encloses no area");
+  }
+  std::vector<rational> outer_area;
+  for (const auto& o : outers) outer_area.push_back(signed_area(o));
+  std::vector<ring_with_holes> grouped;
+  for (auto& o : outers) grouped.push_back({o, {}});
+  for (auto& h : holes) {
+    const point2 q{(h[0][0] + h[1][0]) / 2, (h[0][1] + h[1][1]) / 2};
+    std::ptrdiff_t best = -1;
+    for (std::size_t i = 0; i < outers.size(); ++i)
+      if ((best < 0 || outer_area[i] < outer_area[static_cast<std::size_t>(best)]) && inside_ring(outers[i], q))
+        best = static_cast<std::ptrdiff_t>(i);
+    if (best < 0) throw internal_error("a hole of a region lies in no polygon");
+    grouped[static_cast<std::size_t>(best)].second.push_back(std::move(h));
+  }
+  for (auto& p : grouped) std::sort(p.second.begin(), p.second.end());
+  std::sort(grouped.begin(), grouped.end());
+  std::vector<region_polygon> out;
+  out.reserve(grouped.size());
+  for (auto& p : grouped) {
     region_polygon rp;
     rp.outer = std::move(p.first);
     rp.holes = std::move(p.second);

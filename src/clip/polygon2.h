@@ -103,12 +103,16 @@ std::optional<std::array<point2, 2>> segment_intersection(const point2& a, const
 /// (so that two traversals of one boundary compare equal).
 std::vector<point2> canonical_ring(std::vector<point2> ring);
 
-/// Polygons with holes in canonical form: straight vertices removed, every ring canonical,
-/// holes sorted, polygons sorted by their outer ring. Input rings: outer counter-clockwise,
-/// holes clockwise. 3D coordinates are lifted through the chart.
-std::vector<region_polygon> canonical_polygons(
-    std::vector<std::pair<std::vector<point2>, std::vector<std::vector<point2>>>> polygons,
-    const receiver_chart& chart);
+/// An outer ring (counter-clockwise) with its holes (clockwise).
+using ring_with_holes = std::pair<std::vector<point2>, std::vector<std::vector<point2>>>;
+
+/// A regular region's polygons with holes in canonical form, whatever boundary walks
+/// described it: one polygon per connected piece of the region's interior (the boundary
+/// re-linked where it touches itself so that each cycle keeps to one piece), straight
+/// vertices removed, counter-clockwise cycles as polygons and clockwise ones as holes of the
+/// smallest polygon around them, every ring starting at its smallest rotation, holes and
+/// polygons sorted. 3D coordinates are lifted through the chart.
+std::vector<region_polygon> canonical_polygons(std::vector<ring_with_holes> polygons, const receiver_chart& chart);
 
 /// Zero-area pieces in canonical form: collinear segments that overlap or touch are merged
 /// into maximal ones, points lying on a segment are dropped, and the rest is sorted (segments

@@ -8,13 +8,12 @@
 #include <utility>
 #include <vector>
 
+#include "polygon2.h"
 #include "shadowproof/clip/shadow_region.h"
 
 namespace shadowproof::detail {
 
 using ring = std::vector<point2>;
-/// An outer ring with its holes.
-using ring_with_holes = std::pair<ring, std::vector<ring>>;
 
 class polygon_set {
  public:
