@@ -233,13 +233,12 @@ caster_chain build_chain(const clip_setup& setup, std::size_t ci, case_set& case
   he_from = {};
   he_to = {};
   std::vector<std::int64_t> projected_at(nv, -1);
-  std::vector<point2> projected;
-  const auto project_vertex = [&](std::uint32_t i) -> const point2& {
+  const auto project_vertex = [&](std::uint32_t i) {
     if (projected_at[i] < 0) {
-      projected_at[i] = static_cast<std::int64_t>(projected.size());
-      projected.push_back(setup.project(c.vertices[i]));
+      projected_at[i] = static_cast<std::int64_t>(out.points.size());
+      out.points.push_back(setup.project(c.vertices[i]));
     }
-    return projected[static_cast<std::size_t>(projected_at[i])];
+    return static_cast<std::size_t>(projected_at[i]);
   };
   std::vector<std::pair<std::uint32_t, std::uint32_t>> surviving;  // (u < v, weight index)
   std::vector<long> weights;
@@ -259,15 +258,17 @@ caster_chain build_chain(const clip_setup& setup, std::size_t ci, case_set& case
   }
   out.segments.reserve(surviving.size() + 4 * polygons.size());
   for (std::size_t e = 0; e < surviving.size(); ++e) {
-    const point2 pa = project_vertex(surviving[e].first);
-    const point2 pb = project_vertex(surviving[e].second);
+    const std::size_t pa = project_vertex(surviving[e].first);
+    const std::size_t pb = project_vertex(surviving[e].second);
     out.segments.push_back({pa, pb, weights[e]});
   }
   // Faces projected whole or in pieces: their edges as they are (the arrangement cancels
   // shared ones geometrically).
-  for (const auto& ring : polygons) {
+  for (auto& ring : polygons) {
     out.half_edges += ring.size();
-    for (std::size_t i = 0; i < ring.size(); ++i) out.segments.push_back({ring[i], ring[(i + 1) % ring.size()], 1});
+    const std::size_t first = out.points.size();
+    for (auto& p : ring) out.points.push_back(std::move(p));
+    for (std::size_t i = 0; i < ring.size(); ++i) out.segments.push_back({first + i, first + (i + 1) % ring.size(), 1});
   }
   return out;
 }

@@ -12,14 +12,16 @@
 
 namespace shadowproof::detail {
 
-/// A directed chart segment a → b counted `weight` times (negative: the other way round).
+/// A directed chart segment points[a] → points[b] counted `weight` times (negative: the
+/// other way round).
 struct chain_segment {
-  point2 a, b;
+  std::size_t a = 0, b = 0;
   long weight = 1;
 };
 
 /// What the faces of one caster contribute.
 struct caster_chain {
+  std::vector<point2> points;            ///< chart points, each once per vertex or piece corner
   std::vector<chain_segment> segments;   ///< after cancellation
   std::size_t half_edges = 0;            ///< before cancellation (face boundaries that cast)
   std::size_t exact_faces = 0;           ///< faces decided by exact arithmetic (filter failed or clipped)

@@ -47,7 +47,11 @@ struct face_data {
 
 using segment_traits = CGAL::Arr_segment_traits_2<kernel>;
 using traits = CGAL::Arr_curve_data_traits_2<segment_traits, curve_data, merge_data>;
-using dcel = CGAL::Arr_extended_dcel<traits, bool /*zero-area point*/, std::size_t /*mark*/, face_data>;
+struct vertex_data {
+  bool degenerate_point = false;  ///< a zero-area shadow piece that is a single point
+  std::size_t index = 0;          ///< into the table of rational vertices
+};
+using dcel = CGAL::Arr_extended_dcel<traits, vertex_data, std::size_t /*mark*/, face_data>;
 using arrangement = CGAL::Arrangement_2<traits, dcel>;
 using xcurve = traits::X_monotone_curve_2;
 using face_handle = arrangement::Face_handle;
@@ -103,28 +107,41 @@ void assign_windings(arrangement& arr) {
   }
 }
 
+// The arrangement's vertices as rationals, each converted once (lazy exact numbers are
+// slow to evaluate one operation at a time), indexed by the vertices' data.
+std::vector<point2> vertex_points(arrangement& arr) {
+  std::vector<point2> points;
+  points.reserve(arr.number_of_vertices());
+  for (auto v = arr.vertices_begin(); v != arr.vertices_end(); ++v) {
+    v->data().index = points.size();
+    points.push_back(to_point2(v->point()));
+  }
+  return points;
+}
+
 // Twice the signed area enclosed by one boundary cycle (shoelace, exact).
-ft twice_ccb_area(arrangement::Ccb_halfedge_const_circulator first) {
-  ft s = 0;
+template <class Circulator>
+rational twice_ccb_area(const std::vector<point2>& p, Circulator first) {
+  rational s = 0;
   auto h = first;
   do {
-    const cpoint& a = h->source()->point();
-    const cpoint& b = h->target()->point();
-    s += a.x() * b.y() - a.y() * b.x();
+    const point2& a = p[h->source()->data().index];
+    const point2& b = p[h->target()->data().index];
+    s += a[0] * b[1] - a[1] * b[0];
   } while (++h != first);
   return s;
 }
 
 // The sum of the areas of the faces with `in(face)`.
 template <class In>
-rational area_of(const arrangement& arr, In in) {
-  ft twice = 0;
+rational area_of(const arrangement& arr, const std::vector<point2>& p, In in) {
+  rational twice = 0;
   for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f) {
     if (f->is_unbounded() || !in(f)) continue;
-    twice += twice_ccb_area(f->outer_ccb());
-    for (auto h = f->inner_ccbs_begin(); h != f->inner_ccbs_end(); ++h) twice += twice_ccb_area(*h);
+    twice += twice_ccb_area(p, f->outer_ccb());
+    for (auto h = f->inner_ccbs_begin(); h != f->inner_ccbs_end(); ++h) twice += twice_ccb_area(p, *h);
   }
-  return to_q(twice) / 2;
+  return twice / 2;
 }
 
 // The boundary of the region of faces with `in(face)`: its polygons with holes, read off the
@@ -132,7 +149,7 @@ rational area_of(const arrangement& arr, In in) {
 // half-edge has the region on its left only; the next one along the merged face is found by
 // turning around the target vertex past half-edges interior to the region.
 template <class In>
-std::vector<ring_with_holes> region_boundary(arrangement& arr, In in) {
+std::vector<ring_with_holes> region_boundary(arrangement& arr, const std::vector<point2>& points, In in) {
   const auto boundary = [&](const halfedge_handle& h) { return in(h->face()) && !in(h->twin()->face()); };
   // Faces of one merged face share a component.
   std::vector<std::size_t> parent(arr.number_of_faces());
@@ -153,7 +170,7 @@ std::vector<ring_with_holes> region_boundary(arrangement& arr, In in) {
     std::size_t steps = 0;
     do {
       h->data() = 1;
-      r.push_back(to_point2(h->source()->point()));
+      r.push_back(points[h->source()->data().index]);
       halfedge_handle n = h->next();
       while (!boundary(n)) n = n->twin()->next();
       h = n;
@@ -194,8 +211,11 @@ void for_each_face_around(const arrangement::Vertex_handle& v, F f) {
 }
 
 void add_chain(std::vector<xcurve>& curves, const caster_chain& chain) {
+  std::vector<cpoint> points;
+  points.reserve(chain.points.size());
+  for (const auto& p : chain.points) points.push_back(to_cpoint(p));
   for (const auto& s : chain.segments)
-    if (s.weight != 0) curves.push_back(make_curve(to_cpoint(s.a), to_cpoint(s.b), s.weight, 0, false));
+    if (s.weight != 0) curves.push_back(make_curve(points[s.a], points[s.b], s.weight, 0, false));
 }
 
 }  // namespace
@@ -242,15 +262,15 @@ shadow_region silhouette_region(const scene& s, const plane<rational>& P, const 
   }
   arrangement arr;
   CGAL::insert(arr, curves.begin(), curves.end());
-  for (auto v = arr.vertices_begin(); v != arr.vertices_end(); ++v) v->data() = false;
-  for (const auto& p : degenerate_points) CGAL::insert_point(arr, to_cpoint(p))->data() = true;
+  for (const auto& p : degenerate_points) CGAL::insert_point(arr, to_cpoint(p))->data().degenerate_point = true;
   assign_windings(arr);
+  const std::vector<point2> points = vertex_points(arr);
 
   const auto in_shadow = [](const auto& f) { return f->data().shadow > 0; };
   const auto in_receiver = [](const auto& f) { return f->data().receiver > 0; };
   const auto in_result = [&](const auto& f) { return in_shadow(f) && in_receiver(f); };
 
-  const rational all_area = area_of(arr, in_shadow);
+  const rational all_area = area_of(arr, points, in_shadow);
   if (options.detect_overlap && s.casters.size() > 1) {
     rational sum = 0;
     for (const auto& chain : chains) {
@@ -259,15 +279,15 @@ shadow_region silhouette_region(const scene& s, const plane<rational>& P, const 
       arrangement one;
       CGAL::insert(one, own.begin(), own.end());
       assign_windings(one);
-      sum += area_of(one, in_shadow);
+      sum += area_of(one, vertex_points(one), in_shadow);
     }
     if (sum != all_area) cases.insert(shadow_case::shadows_overlap);
   }
   for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f)
     if (in_shadow(f) && !in_receiver(f)) cases.insert(shadow_case::shadow_outside_receiver);
-  r.chart_area = area_of(arr, in_result);
+  r.chart_area = area_of(arr, points, in_result);
   r.area_squared = r.chart_area * r.chart_area * r.chart.area_scale_squared;
-  r.polygons = canonical_polygons(region_boundary(arr, in_result), r.chart);
+  r.polygons = canonical_polygons(region_boundary(arr, points, in_result), r.chart);
 
   // Zero-area pieces in the closed receiver and outside the closed result, and contacts of
   // the shadow's boundary with the receiver's boundary outside the closed result.
@@ -291,11 +311,11 @@ shadow_region silhouette_region(const scene& s, const plane<rational>& P, const 
     const bool shadow_edge = in_shadow(f) != in_shadow(g), receiver_edge = in_receiver(f) != in_receiver(g);
     const bool from_caster = h->curve().data().degenerate;
     if (!(from_caster || (shadow_edge && receiver_edge)) || !keep_edge(h)) continue;
-    kept.push_back({to_point2(h->source()->point()), to_point2(h->target()->point())});
+    kept.push_back({points[h->source()->data().index], points[h->target()->data().index]});
     if (shadow_edge && receiver_edge) contact = true;
   }
   for (auto v = arr.vertices_begin(); v != arr.vertices_end(); ++v) {
-    bool from_caster = v->data(), shadow_edge = false, receiver_edge = false;
+    bool from_caster = v->data().degenerate_point, shadow_edge = false, receiver_edge = false;
     if (!v->is_isolated()) {
       auto c = v->incident_halfedges();
       const auto first = c;
@@ -308,7 +328,7 @@ shadow_region silhouette_region(const scene& s, const plane<rational>& P, const 
     }
     const bool touching = shadow_edge && receiver_edge;
     if (!(from_caster || touching) || !keep_vertex(v)) continue;
-    const point2 p = to_point2(v->point());
+    const point2& p = points[v->data().index];
     kept.push_back({p, p});
     if (touching) contact = true;
   }
@@ -319,7 +339,7 @@ shadow_region silhouette_region(const scene& s, const plane<rational>& P, const 
   if (r.polygons.empty() && r.degenerate.empty()) cases.insert(shadow_case::empty);
 
   if (options.keep_projected) {
-    for (const auto& p : canonical_polygons(region_boundary(arr, in_shadow), r.chart)) {
+    for (const auto& p : canonical_polygons(region_boundary(arr, points, in_shadow), r.chart)) {
       r.projected_loops.push_back(p.outer);
       for (const auto& h : p.holes) r.projected_loops.push_back(h);
     }
