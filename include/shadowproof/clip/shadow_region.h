@@ -166,8 +166,13 @@ region_side locate(const shadow_region& r, const point2& q);
 /// light's height and an edge-on triangle.
 scene make_demo_scene();
 
-/// Human-readable report: cases, exact chart area and area², polygons (chart and 3D
-/// coordinates), degenerate pieces.
+/// The 3D area √area_squared as the nearest double (correctly rounded: MPFR brackets the
+/// square root at growing precision until both ends round to the same double). A decimal
+/// approximation for people; the exact value is area_squared.
+double approximate_area(const shadow_region& r);
+
+/// Human-readable report: cases, exact chart area, area² and its decimal approximation,
+/// polygons (chart and 3D coordinates), degenerate pieces.
 void print_region_report(std::ostream& out, const shadow_region& r);
 
 /// The same pipeline done the way real-time code does it (seed 003): float shadow matrix,
