@@ -784,3 +784,132 @@ TEST_CASE("silhouette and union-of-pieces builders give the identical region on 
   }
   CHECK(compared >= scenes * 7 / 10);  // the rest: random non-simple polygons, rejected alike
 }
+
+TEST_CASE("light on the receiver plane: only the casters' footprint in the plane shades") {
+  // Receiver [0,4]² in z = 0, point light (0,2,0) in that plane, the triangle (1,1) (2,2)
+  // (1,3) lying on it. The segment from a receiver point to the light stays in the plane and
+  // meets the caster only in the plane: the shadow is the footprint, base 2 × height 1 / 2 = 1
+  // (not the 11 of the region behind the triangle as seen from the light).
+  receiver_polygon rec;
+  rec.outer.vertices = {p3(0, 0, 0), p3(4, 0, 0), p3(4, 4, 0), p3(0, 4, 0)};
+  for (const auto method : {clip_method::silhouette, clip_method::union_of_pieces}) {
+    clip_options o;
+    o.method = method;
+    const auto r = compute_shadow_region(make_scene(pt(0, 2, 0), {polygon_caster({p3(1, 1, 0), p3(2, 2, 0), p3(1, 3, 0)})}, rec), o);
+    CHECK(r.area_squared == 1);
+    REQUIRE(r.polygons.size() == 1);
+    CHECK(same_ring(r.polygons[0].outer, {p2(1, 1), p2(2, 2), p2(1, 3)}));
+    CHECK(r.has(shadow_case::light_on_plane));
+    // The same under a directional light parallel to the plane, towards (−1, 0, 0).
+    const auto d = compute_shadow_region(make_scene(dir(-1, 0, 0), {polygon_caster({p3(1, 1, 0), p3(2, 2, 0), p3(1, 3, 0)})}, rec), o);
+    CHECK(d.area_squared == 1);
+    CHECK(d.has(shadow_case::light_parallel));
+  }
+}
+
+TEST_CASE("a polygon folding back on itself is rejected as not simple") {
+  // (1,1) (3,1) (2,1) (2,2): the edge (3,1)-(2,1) runs back over (1,1)-(3,1).
+  const scene s = make_scene(dir(0, 0, 1), {polygon_caster({p3(1, 1, 1), p3(3, 1, 1), p3(2, 1, 1), p3(2, 2, 1)})});
+  for (const auto method : {clip_method::silhouette, clip_method::union_of_pieces}) {
+    clip_options o;
+    o.method = method;
+    CHECK_THROWS_WITH(compute_shadow_region(s, o), "[shadowproof.scene.self_intersecting] /casters/0/polygon is not a "
+                                                   "simple polygon (its edges fold back on each other)");
+  }
+  receiver_polygon rec;
+  rec.outer.vertices = {p3(0, 0, 0), p3(10, 0, 0), p3(5, 0, 0), p3(5, 5, 0)};
+  CHECK_THROWS_WITH(compute_shadow_region(make_scene(dir(0, 0, 1), {}, rec)),
+                    "[shadowproof.scene.self_intersecting] /receiver/polygon is not a simple polygon (its edges fold back on each other)");
+}
+
+namespace {
+
+// p/q in lowest terms (GMP's two-argument constructor does not reduce, and every rational
+// operation expects reduced operands).
+rational canonical(long p, long q) {
+  rational r(p, q);
+  r.canonicalize();
+  return r;
+}
+
+// A polygon in the plane z = 1/2 + x/4 (crossing the receiver z = 0 at x = −2), as one face
+// and as a fan of triangles from `centre` (a valid triangulation: the polygon is star-shaped
+// from there).
+std::pair<caster, caster> face_and_fan(const std::vector<point2>& ring, const point2& centre) {
+  caster face, fan;
+  face.name = "/casters/0/polygon";
+  face.is_polygon = true;
+  fan.name = "/casters/0/mesh";
+  const auto lift = [](const point2& q) { return p3(q[0], q[1], rational(1, 2) + q[0] / 4); };
+  face.faces.emplace_back();
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    face.vertices.push_back(lift(ring[i]));
+    face.faces.back().push_back(i);
+    fan.vertices.push_back(lift(ring[i]));
+  }
+  fan.vertices.push_back(lift(centre));
+  for (std::size_t i = 0; i < ring.size(); ++i) fan.faces.push_back({ring.size(), i, (i + 1) % ring.size()});
+  return {face, fan};
+}
+
+}  // namespace
+
+TEST_CASE("a face at the 4096-vertex cap casts like the same polygon as triangles, in O(n log n)") {
+  // Convex: (t, t²/3 − 3/2) for t = −3 + 6k/n on a parabola; star: radii 3 and 2 alternating
+  // along directions walking the square [−1,1]² counter-clockwise (not convex, star-shaped
+  // from the origin).
+  receiver_polygon rec;
+  rec.outer.vertices = {p3(-8, -8, 0), p3(8, -8, 0), p3(8, 8, 0), p3(-8, 8, 0)};
+  const std::size_t n = 4096;
+  std::vector<point2> convex, star;
+  for (std::size_t k = 0; k < n; ++k) {
+    const rational t = rational(-3) + canonical(6 * static_cast<long>(k), static_cast<long>(n));
+    convex.push_back(p2(t, t * t / 3 - rational(3, 2)));
+  }
+  std::reverse(convex.begin(), convex.end());  // counter-clockwise
+  for (std::size_t k = 0; k < n; ++k) {
+    const long side = static_cast<long>(k / (n / 4)), j = static_cast<long>(k % (n / 4));
+    const rational a = rational(-1) + canonical(2 * j, static_cast<long>(n / 4));
+    const point2 d = side == 0 ? p2(1, a) : side == 1 ? p2(-a, 1) : side == 2 ? p2(-1, -a) : p2(a, -1);
+    const rational r = k % 2 == 0 ? rational(3) : rational(2);
+    star.push_back(p2(r * d[0], r * d[1]));
+  }
+  for (const auto& ring : {convex, star}) {
+    const auto [face, fan] = face_and_fan(ring, p2(0, 0));
+    const auto a = compute_shadow_region(make_scene(dir(1, 0, 4), {face}, rec));
+    const auto b = compute_shadow_region(make_scene(dir(1, 0, 4), {fan}, rec));
+    CHECK(a.area_squared == b.area_squared);
+    CHECK(a.area_squared > 0);
+    REQUIRE(a.polygons.size() == b.polygons.size());
+    CHECK(a.polygons[0].outer == b.polygons[0].outer);
+    CHECK(a.has(shadow_case::caster_crosses_receiver));
+  }
+}
+
+TEST_CASE("a closed mesh's shared edges cancel: only its silhouette reaches the arrangement") {
+  // The cube [1,3]³ as 12 triangles (36 half-edges) under the sun towards (1,1,2): every
+  // face casts (front and back faces both, flipped to one orientation); the shared edges of
+  // two faces on the same side cancel; what is left is the hexagonal silhouette, each edge
+  // twice (once from the front faces, once from the back ones).
+  caster cube;
+  cube.name = "/casters/0/mesh";
+  for (int k = 0; k < 8; ++k) cube.vertices.push_back(p3(k & 1 ? 3 : 1, k & 2 ? 3 : 1, k & 4 ? 3 : 1));
+  cube.faces = {{0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}, {0, 1, 5}, {0, 5, 4},
+                {2, 6, 7}, {2, 7, 3}, {0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}};
+  receiver_polygon rec;
+  rec.outer.vertices = {p3(-4, -4, 0), p3(6, -4, 0), p3(6, 6, 0), p3(-4, 6, 0)};
+  const auto r = compute_shadow_region(make_scene(dir(1, 1, 2), {cube}, rec));
+  CHECK(r.face_half_edges == 36);
+  CHECK(r.silhouette_edges == 6);
+  CHECK(r.area_squared == 64);  // the hexagon hull of [−1/2,3/2]² and [1/2,5/2]², area 8
+}
+
+TEST_CASE("the decimal area is the correctly rounded square root of area_squared") {
+  shadow_region r;
+  r.area_squared = 2;
+  CHECK(approximate_area(r) == 1.4142135623730951);  // √2 = 1.41421356237309504880…
+  r.area_squared = rational(5650129, 32400);         // (2377/180)²
+  CHECK(approximate_area(r) == to_nearest_double(rational(2377, 180)));
+  r.area_squared = 0;
+  CHECK(approximate_area(r) == 0.0);
+}

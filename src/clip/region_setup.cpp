@@ -136,18 +136,20 @@ clip_setup make_clip_setup(const scene& sc, const plane<rational>& P, case_set& 
   c.chart.area_scale_squared = dot(n, n) / (n[k] * n[k]);
 
   c.receiver_outer = chart_ring(sc.receiver.outer, "/receiver/polygon", P, k);
-  polygon_set receiver(c.receiver_outer);
-  for (std::size_t h = 0; h < sc.receiver.holes.size(); ++h) {
-    const std::string name = "/receiver/holes/" + std::to_string(h);
-    auto ring = chart_ring(sc.receiver.holes[h], name, P, k);
-    polygon_set outside(ring);
-    outside.subtract(polygon_set(c.receiver_outer));
-    if (!outside.empty()) throw error(errc::scene_hole_outside_receiver, name + " is not inside /receiver/polygon");
-    receiver.subtract(polygon_set(ring));
-    std::reverse(ring.begin(), ring.end());
-    c.receiver_holes.push_back(std::move(ring));
+  if (!sc.receiver.holes.empty()) {  // (without holes the receiver has area: no set operation)
+    polygon_set receiver(c.receiver_outer);
+    for (std::size_t h = 0; h < sc.receiver.holes.size(); ++h) {
+      const std::string name = "/receiver/holes/" + std::to_string(h);
+      auto ring = chart_ring(sc.receiver.holes[h], name, P, k);
+      polygon_set outside(ring);
+      outside.subtract(polygon_set(c.receiver_outer));
+      if (!outside.empty()) throw error(errc::scene_hole_outside_receiver, name + " is not inside /receiver/polygon");
+      receiver.subtract(polygon_set(ring));
+      std::reverse(ring.begin(), ring.end());
+      c.receiver_holes.push_back(std::move(ring));
+    }
+    if (receiver.empty()) throw error(errc::scene_empty_polygon, "the holes cover the whole receiver");
   }
-  if (receiver.empty()) throw error(errc::scene_empty_polygon, "the holes cover the whole receiver");
 
   // View box: the receiver's bounding box enlarged by a quarter of its larger side, so the
   // box's own edges never touch the receiver (they would fake boundary contacts).

@@ -183,7 +183,7 @@ scene generate_clip_scene(Source& src, std::size_t max_casters = 3, std::size_t 
     } else if (shape == 3) {
       m = detail::octa_mesh(a, b, height(0, 5), pick(src, 1, 2), pick(src, 1, 2));
     } else if (shape == 4) {
-      const long k = std::min<long>(pick(src, 1, 3), static_cast<long>(max_faces));
+      const long k = std::min<long>(pick(src, 1, 3), max_faces >= 18 ? 3 : max_faces >= 8 ? 2 : 1);
       m = detail::terrain_mesh(src, a, b, k, -1, 4);
     } else {  // one planar polygon with 4 to 6 vertices at one height (maybe not simple)
       const long h = height(-1, 6);
