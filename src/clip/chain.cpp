@@ -79,7 +79,7 @@ caster_chain build_chain(const clip_setup& setup, std::size_t ci, case_set& case
   for (const auto& face : c.faces)
     for (auto i : face) vf[i].used = true;
 
-  // Planes as intervals (nullopt-free: a plane too large for the filter disables it).
+  // Planes and the light as intervals (one too large for the filter disables it).
   std::vector<std::array<interval, 4>> hs(setup.halfspaces.size());
   bool planes_filtered = true;
   for (std::size_t j = 0; j < hs.size(); ++j)
