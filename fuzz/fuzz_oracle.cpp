@@ -20,12 +20,16 @@ namespace {
 
 using namespace shadowproof;
 
+bool fuzzed_from_shadow_configurations(operation op) {
+  const double zeros[4] = {0, 0, 0, 0};
+  return inputs_from_shadow_configuration(op, zeros, zeros, zeros).has_value();
+}
+
 const std::vector<const implementation*>& shadow_implementations() {
   static const std::vector<const implementation*> list = [] {
     std::vector<const implementation*> v;
     for (const auto& i : builtin_implementations())
-      if (i.op == operation::shadow_matrix || i.op == operation::shadow_point || i.op == operation::reflection_matrix)
-        v.push_back(&i);
+      if (fuzzed_from_shadow_configurations(i.op)) v.push_back(&i);
     return v;
   }();
   return list;

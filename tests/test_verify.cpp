@@ -230,6 +230,48 @@ TEST_CASE("a flat view volume leaves only the entries dividing by its zero exten
   CHECK(g.outputs[10].exact_defined);
 }
 
+TEST_CASE("perspective from cot(fovy/2): the hand-derived matrix is exact, a flat depth range undefines only A and B",
+          "[verify]") {
+  // c = cot(fovy/2) = 2 (fovy ≈ 53.13°), aspect 2, n = 1, f = 3, gl depth: c/aspect = 1,
+  // A = −(f+n)/(f−n) = −2, B = −2fn/(f−n) = −3, by hand.
+  const test_case c = make_case(operation::perspective, scalar_type::f32, {2, 2, 1, 3});
+  const std::vector<double> by_hand{1, 0, 0, 0, 0, 2, 0, 0, 0, 0, -2, -3, 0, 0, -1, 0};
+  const case_grade g = grade_case(c, conventions{}, by_hand.data());
+  CHECK(g.max_ulps == 0);
+  CHECK(g.nonfinite + g.garbage == 0);
+  // d3d depth: A = −f/(f−n) = −3/2, B = −fn/(f−n) = −3/2.
+  conventions d3d;
+  d3d.depth = depth_convention::d3d;
+  std::vector<double> in_d3d = by_hand;
+  in_d3d[10] = -1.5;
+  in_d3d[11] = -1.5;
+  CHECK(grade_case(c, d3d, in_d3d.data()).max_ulps == 0);
+  CHECK(grade_case(c, d3d, by_hand.data()).max_ulps > 0);
+  // One float step on c/aspect is one ulp.
+  std::vector<double> off = by_hand;
+  off[0] = std::nextafter(1.0f, 2.0f);
+  const case_grade one = grade_case(c, conventions{}, off.data());
+  CHECK(one.max_ulps == 1);
+  CHECK(one.worst_output == 0);
+  // n = f: only row 2's A and B divide by f − n = 0; infinity there is a correct rejection,
+  // a finite number is garbage, the other entries are still graded.
+  const test_case flat = make_case(operation::perspective, scalar_type::f32, {2, 2, 1, 1});
+  const double inf = std::numeric_limits<double>::infinity();
+  std::vector<double> rejected = by_hand;
+  rejected[10] = -inf;
+  rejected[11] = -inf;
+  const case_grade r = grade_case(flat, conventions{}, rejected.data());
+  CHECK(r.garbage == 0);
+  CHECK(r.nonfinite == 0);
+  CHECK(r.max_ulps == 0);
+  CHECK_FALSE(r.outputs[10].exact_defined);
+  CHECK_FALSE(r.outputs[11].exact_defined);
+  CHECK(grade_case(flat, conventions{}, by_hand.data()).garbage == 2);
+  // A near plane behind the eye admits no projection at all.
+  const test_case behind = make_case(operation::perspective, scalar_type::f32, {2, 2, -1, 3});
+  CHECK(grade_case(behind, conventions{}, by_hand.data()).garbage == 16);
+}
+
 TEST_CASE("the same seed gives the same cases, bit for bit", "[verify]") {
   for (operation op : all_operations()) {
     const auto a = generate_cases(op, scalar_type::f32, 30, 42);
@@ -339,6 +381,14 @@ std::vector<double> float_outputs(const test_case& c) {
         out.assign(16, nan);
       }
       break;
+    case operation::perspective:
+      try {
+        const mat4<T> M = perspective<T>(v(0), v(1), v(2), v(3), depth_convention::gl);
+        for (std::size_t i = 0; i < 16; ++i) out.push_back(M(i / 4, i % 4));
+      } catch (const error&) {
+        out.assign(16, nan);
+      }
+      break;
     case operation::normal_matrix: {
       mat4<T> A = identity4<T>();
       for (std::size_t i = 0; i < 9; ++i) A(i / 3, i % 3) = v(i);
@@ -405,7 +455,7 @@ TEST_CASE("the filtered oracle agrees exactly with the all-rational oracle", "[v
           ++graded;
         }
       }
-  CHECK(graded == 6 * 2 * 2 * 150 + 2 * 150);
+  CHECK(graded == all_operations().size() * 2 * 2 * 150 + 2 * 150);
   // The comparison is only meaningful if intervals decide most cases on their own.
   CHECK(counters.decided_by_intervals > 4 * counters.fell_back_to_rationals);
 }

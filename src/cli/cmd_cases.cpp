@@ -25,8 +25,7 @@ int run_cases(const cases_options& o) {
   const auto op = operation_from_string(o.op);
   if (!op)
     throw error(errc::verify_unknown_op,
-                "unknown --op '" + o.op +
-                    "'; expected shadow-matrix, shadow-point, reflection-matrix, ortho, frustum or normal-matrix");
+                "unknown --op '" + o.op + "'; expected one of " + operation_names(", "));
   const auto type = scalar_type_from_string(o.type);
   if (!type) throw error(errc::verify_unknown_type, "unknown --type '" + o.type + "'; expected f32 or f64");
   std::optional<input_class> cls;
@@ -47,7 +46,7 @@ const command_registration reg{command{
     "cases", "write JSON-lines test cases (hex floats + exact decimals) for an implementation in any language",
     [](CLI::App& app, const global_options&) {
       auto o = std::make_shared<cases_options>();
-      app.add_option("--op", o->op, "shadow-matrix, shadow-point, reflection-matrix, ortho, frustum or normal-matrix")->capture_default_str();
+      app.add_option("--op", o->op, "one of " + operation_names(", "))->capture_default_str();
       app.add_option("--type", o->type, "f32 or f64: every input is exactly representable in it")
           ->capture_default_str();
       app.add_option("--count", o->count, "number of cases")->capture_default_str();

@@ -13,6 +13,7 @@
 #include "command.h"
 #include "shadowproof/core/error.h"
 #include "shadowproof/core/io.h"
+#include "shadowproof/core/svg.h"
 #include "shadowproof/verify/operation.h"
 #include "shadowproof/verify/conventions.h"
 #include "shadowproof/verify/implementation.h"
@@ -66,8 +67,6 @@ class progress_bar {
 // per implementation. Exactly degenerate cases (closeness −inf) sit in a band at the left;
 // cases with a non-finite or garbage output sit in a band at the top.
 void write_svg(const std::string& path, const std::vector<impl_run>& runs) {
-  std::ostringstream f;  // written atomically at the end: a killed run leaves the old file
-  f << std::fixed << std::setprecision(1);  // a tenth of a pixel is plenty
   const double W = 960, left = 70, right = 250, top = 40, bottom = 60;
   const double H = std::max(560.0, top + 14.0 * static_cast<double>(runs.size()) + 30);  // room for the legend
   double xmin = 0, xmax = 0;
@@ -84,24 +83,20 @@ void write_svg(const std::string& path, const std::vector<impl_run>& runs) {
   static const char* palette[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b",
                                   "#e377c2", "#7f7f7f", "#bcbd22", "#17becf", "#393b79", "#637939",
                                   "#8c6d31", "#843c39", "#7b4173", "#3182bd", "#e6550d", "#31a354"};
-  f << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << W << "\" height=\"" << H
-    << "\" font-family=\"sans-serif\" font-size=\"11\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-  f << "<text x=\"" << left << "\" y=\"22\" font-size=\"14\">bits of error (max per case) vs closeness to "
-       "degeneracy (shadows: log2 |P·L| / (|P||L|))</text>\n";
+  svg_document f(W, H);  // a tenth of a pixel is plenty
+  f.text(left, 22, "bits of error (max per case) vs closeness to degeneracy (shadows: log2 |P·L| / (|P||L|))", "start",
+         "", 14);
   for (int y = 0; y <= 64; y += 8) {
-    f << "<line x1=\"" << left << "\" x2=\"" << W - right << "\" y1=\"" << sy(y) << "\" y2=\"" << sy(y)
-      << "\" stroke=\"#ddd\"/><text x=\"" << left - 8 << "\" y=\"" << sy(y) + 4 << "\" text-anchor=\"end\">" << y
-      << "</text>\n";
+    f.line(left, sy(y), W - right, sy(y), "#ddd");
+    f.text(left - 8, sy(y) + 4, std::to_string(y), "end");
   }
   for (double x = std::ceil((xmin + 10) / 20) * 20; x <= xmax; x += 20) {
-    f << "<line x1=\"" << sx(x) << "\" x2=\"" << sx(x) << "\" y1=\"" << top << "\" y2=\"" << H - bottom
-      << "\" stroke=\"#eee\"/><text x=\"" << sx(x) << "\" y=\"" << H - bottom + 16 << "\" text-anchor=\"middle\">"
-      << static_cast<int>(x) << "</text>\n";
+    f.line(sx(x), top, sx(x), H - bottom, "#eee");
+    f.text(sx(x), H - bottom + 16, std::to_string(static_cast<int>(x)), "middle");
   }
-  f << "<text x=\"" << sx(xmin + 4) << "\" y=\"" << H - bottom + 16 << "\" text-anchor=\"middle\">exact 0</text>\n";
-  f << "<text x=\"" << W - right << "\" y=\"" << sy(66) << "\" text-anchor=\"end\">non-finite / garbage</text>\n";
-  f << "<text x=\"" << (left + W - right) / 2 << "\" y=\"" << H - 18
-    << "\" text-anchor=\"middle\">log2 closeness (0 = far from degenerate; more negative = closer)</text>\n";
+  f.text(sx(xmin + 4), H - bottom + 16, "exact 0", "middle");
+  f.text(W - right, sy(66), "non-finite / garbage", "end");
+  f.text((left + W - right) / 2, H - 18, "log2 closeness (0 = far from degenerate; more negative = closer)", "middle");
   for (std::size_t i = 0; i < runs.size(); ++i) {
     const char* colour = palette[i % (sizeof palette / sizeof *palette)];
     const auto& r = runs[i];
@@ -110,14 +105,12 @@ void write_svg(const std::string& path, const std::vector<impl_run>& runs) {
       double x = closeness_to_degeneracy(r.cases[k]);
       if (!std::isfinite(x)) x = xmin + 4;
       const double y = (g.nonfinite || g.garbage) ? 66 : std::min(g.max_bits, 64.0);
-      f << "<circle cx=\"" << sx(x) << "\" cy=\"" << sy(y) << "\" r=\"1.6\" fill=\"" << colour
-        << "\" fill-opacity=\"0.55\"/>\n";
+      f.circle(sx(x), sy(y), 1.6, colour, 0.55);
     }
-    f << "<rect x=\"" << W - right + 12 << "\" y=\"" << top + 14 * i << "\" width=\"9\" height=\"9\" fill=\""
-      << colour << "\"/><text x=\"" << W - right + 26 << "\" y=\"" << top + 14 * i + 9 << "\">" << r.impl->name
-      << "</text>\n";
+    f.rect(W - right + 12, top + 14 * i, 9, 9, colour);
+    f.text(W - right + 26, top + 14 * i + 9, r.impl->name);
   }
-  f << "</svg>\n";
+  // Written atomically: a killed run leaves the old file.
   write_file_atomically(path, f.str());
 }
 
@@ -132,8 +125,7 @@ int run_check(const check_options& o) {
   if (!o.op.empty()) {
     op_filter = operation_from_string(o.op);
     if (!op_filter)
-      throw error(errc::verify_unknown_op, "unknown --op '" + o.op +
-                                          "'; expected shadow-matrix, shadow-point, reflection-matrix, ortho, frustum or normal-matrix");
+      throw error(errc::verify_unknown_op, "unknown --op '" + o.op + "'; expected one of " + operation_names(", "));
   }
   if (o.cases == 0) throw error(errc::check_cases, "--cases must be at least 1");
   std::vector<const implementation*> chosen;
@@ -219,7 +211,7 @@ const command_registration reg{command{
     [](CLI::App& app, const global_options&) {
       auto o = std::make_shared<check_options>();
       app.add_option("--impl", o->impl, "implementation name, or 'all' (see --list)");
-      app.add_option("--op", o->op, "only this operation: shadow-matrix, shadow-point, reflection-matrix, ortho, frustum, normal-matrix");
+      app.add_option("--op", o->op, "only this operation: " + operation_names(", "));
       app.add_option("--cases", o->cases, "cases per implementation (split between regular, near-degenerate, "
                                           "degenerate)")->capture_default_str();
       app.add_option("--seed", o->seed, "case generator seed (same seed, same cases)")->capture_default_str();

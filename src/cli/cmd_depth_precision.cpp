@@ -12,6 +12,7 @@
 
 #include "command.h"
 #include "shadowproof/core/io.h"
+#include "shadowproof/core/svg.h"
 #include "print.h"
 #include "projection_options.h"
 #include "shadowproof/constructions/depth_precision.h"
@@ -63,7 +64,6 @@ nlohmann::json sample_json(const depth_sample& s) {
 
 void write_svg(const std::string& path, const std::string& title, const std::vector<rational>& distances,
                const std::vector<depth_precision_report>& reports) {
-  std::ostringstream out;
   const double width = 800, height = 480, left = 80, right = 240, top = 40, bottom = 60;
   double x0 = std::log10(to_nearest_double(distances.front())), x1 = std::log10(to_nearest_double(distances.back()));
   double y0 = 1e300, y1 = -1e300;
@@ -83,41 +83,33 @@ void write_svg(const std::string& path, const std::string& title, const std::vec
   if (x1 <= x0) x1 = x0 + 1;
   auto px = [&](double lx) { return left + (lx - x0) / (x1 - x0) * (width - left - right); };
   auto py = [&](double ly) { return height - bottom - (ly - y0) / (y1 - y0) * (height - top - bottom); };
-  out << std::fixed << std::setprecision(2);
-  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
-      << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
-      << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
-      << "<text x=\"" << left << "\" y=\"20\">" << title << "</text>\n";
-  // Axes and decade grid lines (log scale on both axes).
-  // At most about 10 labelled decades per axis.
+  svg_document out(width, height, 12, 2);
+  out.text(left, 20, title);
+  // Axes and decade grid lines (log scale on both axes), at most about 10 labelled decades each.
   const int y_step = std::max(1, static_cast<int>(std::ceil((y1 - y0) / 10)));
   const int x_step = std::max(1, static_cast<int>(std::ceil((x1 - x0) / 10)));
-  for (int e = static_cast<int>(std::ceil(y0)); e <= static_cast<int>(y1); e += y_step)
-    out << "<line x1=\"" << left << "\" x2=\"" << width - right << "\" y1=\"" << py(e) << "\" y2=\"" << py(e)
-        << "\" stroke=\"#ddd\"/><text x=\"" << left - 6 << "\" y=\"" << py(e) + 4
-        << "\" text-anchor=\"end\">1e" << e << "</text>\n";
-  for (int e = static_cast<int>(std::ceil(x0)); e <= static_cast<int>(std::floor(x1)); e += x_step)
-    out << "<line x1=\"" << px(e) << "\" x2=\"" << px(e) << "\" y1=\"" << top << "\" y2=\"" << height - bottom
-        << "\" stroke=\"#ddd\"/><text x=\"" << px(e) << "\" y=\"" << height - bottom + 16
-        << "\" text-anchor=\"middle\">1e" << e << "</text>\n";
-  out << "<rect x=\"" << left << "\" y=\"" << top << "\" width=\"" << width - left - right << "\" height=\""
-      << height - top - bottom << "\" fill=\"none\" stroke=\"black\"/>\n"
-      << "<text x=\"" << (left + width - right) / 2 << "\" y=\"" << height - 20
-      << "\" text-anchor=\"middle\">eye distance (log scale)</text>\n"
-      << "<text transform=\"translate(20," << (top + height - bottom) / 2
-      << ") rotate(-90)\" text-anchor=\"middle\">gap between consecutive stored depths (log scale)</text>\n";
+  for (int e = static_cast<int>(std::ceil(y0)); e <= static_cast<int>(y1); e += y_step) {
+    out.line(left, py(e), width - right, py(e), "#ddd");
+    out.text(left - 6, py(e) + 4, "1e" + std::to_string(e), "end");
+  }
+  for (int e = static_cast<int>(std::ceil(x0)); e <= static_cast<int>(std::floor(x1)); e += x_step) {
+    out.line(px(e), top, px(e), height - bottom, "#ddd");
+    out.text(px(e), height - bottom + 16, "1e" + std::to_string(e), "middle");
+  }
+  out.rect(left, top, width - left - right, height - top - bottom, "none", "black");
+  out.text((left + width - right) / 2, height - 20, "eye distance (log scale)", "middle");
+  out.text(20, (top + height - bottom) / 2, "gap between consecutive stored depths (log scale)", "middle", "", 0, -90);
   const char* colours[] = {"#1f77b4", "#d62728", "#2ca02c"};
   for (std::size_t k = 0; k < reports.size(); ++k) {
-    out << "<polyline fill=\"none\" stroke=\"" << colours[k % 3] << "\" stroke-width=\"1.5\" points=\"";
+    std::vector<std::pair<double, double>> points;
     for (const auto& s : reports[k].samples)
       if (s.spacing && *s.spacing > 0)
-        out << px(std::log10(to_nearest_double(s.distance))) << ","
-            << py(std::log10(to_nearest_double(*s.spacing))) << " ";
-    out << "\"/>\n<text x=\"" << width - right + 10 << "\" y=\"" << top + 20 + 18 * k << "\" fill=\""
-        << colours[k % 3] << "\">" << to_string(reports[k].convention) << " ("
-        << reports[k].distinct_values << " values)</text>\n";
+        points.emplace_back(px(std::log10(to_nearest_double(s.distance))), py(std::log10(to_nearest_double(*s.spacing))));
+    out.polyline(points, colours[k % 3], 1.5);
+    out.text(width - right + 10, top + 20 + 18 * k,
+             std::string(to_string(reports[k].convention)) + " (" + std::to_string(reports[k].distinct_values) + " values)",
+             "start", colours[k % 3]);
   }
-  out << "</svg>\n";
   write_file_atomically(path, out.str());
 }
 

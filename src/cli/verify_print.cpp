@@ -49,28 +49,9 @@ void print_table(std::ostream& out, const std::vector<report_row>& rows) {
 }
 
 std::string reproducer_command(const test_case& c, depth_convention depth) {
-  switch (c.op) {
-    case operation::shadow_matrix:
-      return "shadowproof shadow --plane " + hex_list(c, 0, 4) + " --light " + hex_list(c, 4, 4);
-    case operation::shadow_point:
-      return "shadowproof shadow --plane " + hex_list(c, 0, 4) + " --light " + hex_list(c, 4, 4) + " --point " +
-             hex_list(c, 8, 3);
-    case operation::reflection_matrix:
-      return "shadowproof reflect --plane " + hex_list(c, 0, 4);
-    case operation::ortho:
-    case operation::frustum: {
-      const char* flags[] = {"--left", "--right", "--bottom", "--top", "--near", "--far"};
-      std::string s = std::string("shadowproof project ") + (c.op == operation::ortho ? "ortho" : "frustum");
-      for (std::size_t i = 0; i < 6; ++i) s += std::string(" ") + flags[i] + " " + hex_string(c.inputs[i]);
-      return s + " --convention " + std::string(to_string(depth)) ;
-    }
-    case operation::normal_matrix: {
-      std::string s = "shadowproof normal-matrix --matrix ";
-      for (std::size_t i = 0; i < 3; ++i) s += hex_list(c, 3 * i, 3) + ",0,";
-      return s + "0,0,0,1";
-    }
-  }
-  return "";
+  conventions conv;
+  conv.depth = depth;
+  return shadowproof::reproducer_command(c, conv);
 }
 
 void print_worst(std::ostream& out, const std::string& title, const case_grade& g, const test_case& c,

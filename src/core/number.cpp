@@ -318,4 +318,8 @@ rational exact_value(double x) {
   return rational(x);  // mpq_set_d is exact for finite doubles
 }
 
+bool representable_in_float(double x) {
+  return std::isfinite(x) && static_cast<double>(static_cast<float>(x)) == x;
+}
+
 }  // namespace shadowproof

@@ -17,12 +17,18 @@ namespace shadowproof {
 namespace {
 
 bool is_supported(operation op) {
-  return op == operation::shadow_matrix || op == operation::shadow_point || op == operation::reflection_matrix;
+  const double zeros[4] = {0, 0, 0, 0};
+  return inputs_from_shadow_configuration(op, zeros, zeros, zeros).has_value();
 }
 
-bool representable(double x, scalar_type type) {
-  if (!std::isfinite(x)) return false;
-  return type == scalar_type::f64 || static_cast<double>(static_cast<float>(x)) == x;
+// Where an input group starts, or nothing when the operation has none of that name.
+std::optional<std::size_t> group_offset(operation op, std::string_view name) {
+  std::size_t k = 0;
+  for (const auto& g : signature(op).inputs) {
+    if (g.name == name) return k;
+    k += g.size;
+  }
+  return std::nullopt;
 }
 
 std::string base_family(const std::string& family) { return family.substr(0, family.find_first_of("+*")); }
@@ -61,17 +67,16 @@ bool same_failure(const case_grade& a, const case_grade& b, failure_kind kind, s
 // A plane needs a non-zero normal and a light a non-zero entry; the implementation's declared
 // requirements (unit normal, w fixed) are kept by pinning those inputs while shrinking.
 bool valid_inputs(const test_case& c) {
-  const auto& x = c.inputs;
-  if (x[0] == 0 && x[1] == 0 && x[2] == 0) return false;
-  if (c.op != operation::reflection_matrix && x[4] == 0 && x[5] == 0 && x[6] == 0 && x[7] == 0) return false;
-  return std::all_of(x.begin(), x.end(), [&](double v) { return representable(v, c.type); });
+  if (!invalid_inputs_reason(c).empty()) return false;
+  return std::all_of(c.inputs.begin(), c.inputs.end(), [&](double v) { return representable(v, c.type); });
 }
 
 std::vector<bool> pinned_inputs(const implementation& impl) {
   std::vector<bool> keep(signature(impl.op).input_count, false);
-  if (impl.conv.unit_normal) keep[0] = keep[1] = keep[2] = true;
-  if (impl.op != operation::reflection_matrix && (impl.conv.directional_only || impl.conv.point_light_only))
-    keep[7] = true;
+  const auto plane = group_offset(impl.op, "plane");
+  const auto light = group_offset(impl.op, "light");
+  if (plane && impl.conv.unit_normal) keep[*plane] = keep[*plane + 1] = keep[*plane + 2] = true;
+  if (light && (impl.conv.directional_only || impl.conv.point_light_only)) keep[*light + 3] = true;
   return keep;
 }
 
@@ -100,9 +105,14 @@ std::optional<double> round_to_type(const rational& q, scalar_type type) {
 std::optional<transformed> transform(const implementation& impl, const test_case& c, const std::string& relation) {
   const bool matrix = signature(c.op).matrix_size == 4;
   const bool up_to_scale = impl.conv.homogeneous || impl.conv.normalises_plane;
+  const operation_symmetries& sym = symmetries(c.op);
+  const auto plane = group_offset(c.op, "plane");
+  const auto light = group_offset(c.op, "light");
+  const auto point = group_offset(c.op, "point");
   transformed t{c, {}};
   auto& in = t.input.inputs;
-  auto scaled_outputs = [matrix](double factor) {
+  auto scaled_outputs = [matrix](int degree) {
+    const double factor = std::ldexp(1.0, degree);
     return [matrix, factor](const std::vector<double>& out) -> std::optional<std::vector<double>> {
       if (!matrix) return out;
       std::vector<double> e(out);
@@ -111,21 +121,20 @@ std::optional<transformed> transform(const implementation& impl, const test_case
     };
   };
   if (relation == "scale_plane") {
+    if (!plane || sym.plane_degree < 0) return std::nullopt;
     if (matrix && up_to_scale) return std::nullopt;
     if (impl.conv.unit_normal) return std::nullopt;
-    for (int i = 0; i < 4; ++i) in[i] *= 2;
-    // The shadow matrix is linear in P; the mirror and the image do not depend on P's scale.
-    t.expect = scaled_outputs(c.op == operation::shadow_matrix ? 2.0 : 1.0);
+    for (std::size_t i = 0; i < 4; ++i) in[*plane + i] *= 2;
+    t.expect = scaled_outputs(sym.plane_degree);
   } else if (relation == "scale_light") {
-    if (c.op == operation::reflection_matrix || impl.conv.point_light_only) return std::nullopt;
+    if (!light || sym.light_degree < 0 || impl.conv.point_light_only) return std::nullopt;
     if (matrix && up_to_scale) return std::nullopt;
-    for (int i = 4; i < 8; ++i) in[i] *= 2;
-    t.expect = scaled_outputs(2.0);
+    for (std::size_t i = 0; i < 4; ++i) in[*light + i] *= 2;
+    t.expect = scaled_outputs(sym.light_degree);
   } else if (relation == "swap_xy") {
-    auto swap_at = [&](std::size_t i) { std::swap(in[i], in[i + 1]); };
-    swap_at(0);
-    if (c.op != operation::reflection_matrix) swap_at(4);
-    if (c.op == operation::shadow_point) swap_at(8);
+    if (!sym.swap_xy) return std::nullopt;
+    for (const auto& at : {plane, light, point})
+      if (at) std::swap(in[*at], in[*at + 1]);
     t.expect = [matrix](const std::vector<double>& out) -> std::optional<std::vector<double>> {
       std::vector<double> e(out);
       if (!matrix) {
@@ -140,20 +149,20 @@ std::optional<transformed> transform(const implementation& impl, const test_case
       return e;
     };
   } else if (relation == "translate") {
-    if (c.op != operation::shadow_point) return std::nullopt;
+    if (!sym.translation || !plane || !light || !point) return std::nullopt;
     const double shift[3] = {1, -2, 3};
     // Plane: d' = d − n·t; light: position + w t; point: + t. All must stay exact.
-    rational d = exact_value(in[3]);
-    for (int i = 0; i < 3; ++i) d -= exact_value(in[i]) * rational(shift[i]);
+    rational d = exact_value(in[*plane + 3]);
+    for (std::size_t i = 0; i < 3; ++i) d -= exact_value(in[*plane + i]) * rational(shift[i]);
     const auto new_d = round_to_type(d, c.type);
     if (!new_d || exact_value(*new_d) != d) return std::nullopt;
-    in[3] = *new_d;
-    for (int i = 0; i < 3; ++i) {
-      const auto l = exact_sum(in[4 + i], in[7] * shift[i], c.type);
-      const auto p = exact_sum(in[8 + i], shift[i], c.type);
+    in[*plane + 3] = *new_d;
+    for (std::size_t i = 0; i < 3; ++i) {
+      const auto l = exact_sum(in[*light + i], in[*light + 3] * shift[i], c.type);
+      const auto p = exact_sum(in[*point + i], shift[i], c.type);
       if (!l || !p) return std::nullopt;
-      in[4 + i] = *l;
-      in[8 + i] = *p;
+      in[*light + i] = *l;
+      in[*point + i] = *p;
     }
     const scalar_type type = c.type;
     t.expect = [shift, type](const std::vector<double>& out) -> std::optional<std::vector<double>> {
@@ -203,9 +212,13 @@ std::string_view to_string(failure_kind k) {
 }
 
 std::vector<std::string> metamorphic_relations(operation op) {
-  if (op == operation::shadow_point) return {"scale_plane", "scale_light", "swap_xy", "translate"};
-  if (op == operation::shadow_matrix) return {"scale_plane", "scale_light", "swap_xy"};
-  return {"scale_plane", "swap_xy"};
+  const operation_symmetries& sym = symmetries(op);
+  std::vector<std::string> names;
+  if (sym.plane_degree >= 0) names.push_back("scale_plane");
+  if (sym.light_degree >= 0) names.push_back("scale_light");
+  if (sym.swap_xy) names.push_back("swap_xy");
+  if (sym.translation) names.push_back("translate");
+  return names;
 }
 
 std::optional<std::uint64_t> metamorphic_violation(const implementation& impl, const test_case& c,
@@ -222,17 +235,20 @@ std::optional<std::uint64_t> metamorphic_violation(const implementation& impl, c
 }
 
 test_case make_fuzz_case(const generated_case<double>& g, const implementation& impl, std::uint64_t id) {
-  if (!is_supported(impl.op))
-    throw error(errc::fuzz_unsupported_operation, "fuzzing supports shadow-matrix, shadow-point and reflection-matrix, not " +
+  auto inputs = inputs_from_shadow_configuration(impl.op, g.plane.data(), g.light.data(), g.point.data());
+  if (!inputs) {
+    std::string fuzzed;
+    for (operation op : all_operations())
+      if (is_supported(op)) fuzzed += (fuzzed.empty() ? "" : ", ") + std::string(to_string(op));
+    throw error(errc::fuzz_unsupported_operation, "fuzzing supports " + fuzzed + ", not " +
                                                   std::string(to_string(impl.op)) + " (" + impl.name + ")");
+  }
   test_case c;
   c.id = id;
   c.op = impl.op;
   c.type = impl.type;
   c.cls = class_of_family(g.family, base_family(g.family));
-  c.inputs.assign(g.plane.begin(), g.plane.end());
-  if (impl.op != operation::reflection_matrix) c.inputs.insert(c.inputs.end(), g.light.begin(), g.light.end());
-  if (impl.op == operation::shadow_point) c.inputs.insert(c.inputs.end(), g.point.begin(), g.point.end());
+  c.inputs = std::move(*inputs);
   return c;
 }
 

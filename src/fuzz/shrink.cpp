@@ -15,8 +15,7 @@ std::size_t bits_of(double x) {
 }
 
 bool representable(double x, bool single_precision) {
-  if (!std::isfinite(x)) return false;
-  return !single_precision || static_cast<double>(static_cast<float>(x)) == x;
+  return single_precision ? representable_in_float(x) : std::isfinite(x);
 }
 
 // x rounded to `bits` significant bits, to nearest (ties away from zero are fine here: any

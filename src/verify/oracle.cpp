@@ -1,194 +1,52 @@
-// The grading oracle: the exact answer for the very same float inputs, decided with interval
-// arithmetic when it can be and with exact rationals otherwise. The whole grade is written
-// once, generic over the number type N (rational or interval), so the filtered and the naive
-// oracle cannot disagree except through an undecided interval, which falls back.
+// The grading oracle: the exact answer for the very same float inputs, decided by the
+// operation's dedicated error-free kernels when it has them, then by interval arithmetic, and
+// by exact rationals otherwise. The grade is written once, generic over the number type N
+// (rational or interval), and the exact outputs come from the operation's own entry in the
+// table (operations/<op>.cpp), so the filtered and the naive oracle cannot disagree except
+// through an undecided interval, which falls back.
 #include <array>
 #include <cmath>
 #include <cstring>
 #include <limits>
 #include <type_traits>
 
-#include "oracle_fast.h"
-#include "oracle_interval.h"
-#include "shadowproof/constructions/classify.h"
+#include "operation_table.h"
 #include "shadowproof/core/error.h"
-#include "shadowproof/constructions/normal_matrix.h"
 #include "shadowproof/core/number.h"
-#include "shadowproof/constructions/project.h"
-#include "shadowproof/constructions/reflect.h"
-#include "shadowproof/constructions/shadow.h"
 #include "shadowproof/core/ulp.h"
-#include "shadowproof/verify/operation.h"
-#include "shadowproof/verify/conventions.h"
-#include "shadowproof/verify/implementation.h"
-#include "shadowproof/verify/cases.h"
 #include "shadowproof/verify/grade.h"
 
 namespace shadowproof {
+
+std::string_view to_string(image_class c) {
+  switch (c) {
+    case image_class::on_receiver: return "on_receiver";
+    case image_class::shadow: return "shadow";
+    case image_class::behind_receiver: return "behind_receiver";
+    case image_class::beyond_light: return "beyond_light";
+    case image_class::nonfinite: return "nonfinite";
+    case image_class::other: return "other";
+  }
+  return "unknown";
+}
+
 namespace {
 
-// Intervals over double decide float outputs (and f32 products are exact in double); double
-// outputs need the 64-bit significand of long double.
-using ival32 = detail::interval<double>;
-using ival64 = detail::interval<long double>;
+using detail::abs_n;
+using detail::exact_outputs;
+using detail::from_double;
+using detail::ival32;
+using detail::ival64;
+using detail::round_exact;
+using detail::sign_n;
 
-template <class T>
-struct is_interval : std::false_type {};
-template <class B>
-struct is_interval<detail::interval<B>> : std::true_type {};
-
-// --- the number-type specific pieces -------------------------------------------------------
-
+// The operation's exact outputs with number type N.
 template <class N>
-N from_double(double x) {
-  if constexpr (std::is_same_v<N, rational>) return exact_value(x);
-  else return N::point(x);
-}
-
-template <class F>
-F round_exact(const rational& q) {
-  F r;
-  if constexpr (std::is_same_v<F, float>) r = to_nearest_float(q);
-  else r = to_nearest_double(q);
-  return r == 0 ? F(0) : r;
-}
-template <class F, class B>
-F round_exact(const detail::interval<B>& x) { return detail::round_to<F>(x); }
-
-int sign_n(const rational& q) { return sgn(q); }
-template <class B>
-int sign_n(const detail::interval<B>& x) { return detail::sign(x); }
-
-template <class N>
-N abs_n(const N& x) { return sign_n(x) < 0 ? N(-x) : x; }
-
-// --- canonical exact outputs -----------------------------------------------------------------
-
-// Fixed-size storage: the oracle's inner loop allocates nothing but the grade itself.
-template <class N>
-struct small_vector {
-  std::array<N, 16> v{};
-  std::size_t n = 0;
-  void push_back(const N& x) { v[n++] = x; }
-  void assign(std::size_t count, const N& x) {
-    n = count;
-    for (std::size_t i = 0; i < count; ++i) v[i] = x;
-  }
-  bool empty() const { return n == 0; }
-  N& operator[](std::size_t i) { return v[i]; }
-  const N& operator[](std::size_t i) const { return v[i]; }
-};
-
-template <class N>
-struct exact_outputs {
-  small_vector<N> values;
-  bool defined = true;                  // false: no output exists (undefined image, singular A)
-  small_vector<bool> entry_undefined;   // when defined: entries that divide by zero (flat volumes)
-  std::optional<point_class> cls;
-};
-
-template <class N>
-vec4<N> vec_from(const double* x, std::size_t n, const N& last) {
-  vec4<N> v;
-  for (std::size_t i = 0; i < n; ++i) v[i] = from_double<N>(x[i]);
-  if (n == 3) v[3] = last;
-  return v;
-}
-
-template <class N>
-light<N> canonical_light(const double* x, const conventions& conv) {
-  light<N> L{vec_from<N>(x, 4, N(0))};
-  // A directional light given along its rays is the negation of the canonical one (exact).
-  if (conv.light == light_sign::along_rays && x[3] == 0)
-    for (std::size_t i = 0; i < 3; ++i) L.l[i] = -L.l[i];
-  return L;
-}
-
-template <class N>
-exact_outputs<N> canonical(const test_case& c, const conventions& conv) {
-  exact_outputs<N> r;
-  const double* in = c.inputs.data();
-  const plane<N> P{vec_from<N>(in, 4, N(0))};
-  switch (c.op) {
-    case operation::shadow_matrix: {
-      const mat4<N> M = shadow_matrix(P, canonical_light<N>(in + 4, conv));
-      for (std::size_t i = 0; i < 16; ++i) r.values.push_back(M(i / 4, i % 4));
-      break;
-    }
-    case operation::shadow_point: {
-      const light<N> L = canonical_light<N>(in + 4, conv);
-      const vec4<N> V = vec_from<N>(in + 8, 3, N(1));
-      r.cls = classify_point(P, L, V);
-      // A point on the receiver is its own shadow, also when the light is parallel to or on
-      // the receiver (then the whole line from V to the light lies in it and the matrix's
-      // image is the zero vector, but V is still where the line meets the receiver).
-      const bool own_image = *r.cls == point_class::on_receiver || *r.cls == point_class::line_in_plane;
-      if (own_image || (conv.clamps_behind_receiver && *r.cls == point_class::behind_receiver)) {
-        for (std::size_t i = 0; i < 3; ++i) r.values.push_back(V[i]);
-        break;
-      }
-      const vec4<N> h = shadow_image(P, L, V);
-      if (sign_n(h[3]) == 0) {
-        r.defined = false;
-        r.values.assign(3, N(0));
-      } else {
-        for (std::size_t i = 0; i < 3; ++i) r.values.push_back(h[i] / h[3]);
-      }
-      break;
-    }
-    case operation::reflection_matrix: {
-      const mat4<N> M = reflection_matrix(P);
-      for (std::size_t i = 0; i < 16; ++i) r.values.push_back(M(i / 4, i % 4));
-      break;
-    }
-    case operation::ortho:
-    case operation::frustum: {
-      std::array<N, 6> x;
-      for (std::size_t i = 0; i < 6; ++i) x[i] = from_double<N>(in[i]);
-      auto build = [&](const std::array<N, 6>& v) {
-        return c.op == operation::ortho ? orthographic(v[0], v[1], v[2], v[3], v[4], v[5], conv.depth)
-                                        : frustum(v[0], v[1], v[2], v[3], v[4], v[5], conv.depth, false);
-      };
-      if (c.op == operation::frustum && sign_n(x[4]) <= 0) {  // near ≤ 0: no such projection
-        r.defined = false;
-        r.values.assign(16, N(0));
-        break;
-      }
-      // A flat volume (l = r, b = t or n = f) divides by zero only in the entries that scale
-      // or centre that axis: row k's diagonal and its offset column (3 for ortho and for the
-      // depth row, 2 for the x and y rows of a frustum). The other entries still exist.
-      // A builder declared symmetric (l = −r, b = −t) has a zero centre offset by construction,
-      // so for it a flat x or y extent leaves that offset defined as 0.
-      std::array<N, 6> v = x;
-      r.entry_undefined.assign(16, false);
-      small_vector<std::size_t> zero_offsets;
-      for (std::size_t k = 0; k < 3; ++k)
-        if (sign_n(N(x[2 * k + 1] - x[2 * k])) == 0) {
-          v[2 * k + 1] = x[2 * k] + N(1);
-          const std::size_t offset = (c.op == operation::frustum && k < 2) ? 2 : 3;
-          r.entry_undefined[k * 4 + k] = true;
-          if (conv.symmetric_view && k < 2) zero_offsets.push_back(k * 4 + offset);
-          else r.entry_undefined[k * 4 + offset] = true;
-        }
-      const mat4<N> M = build(v);
-      for (std::size_t i = 0; i < 16; ++i) r.values.push_back(M(i / 4, i % 4));
-      for (std::size_t i = 0; i < zero_offsets.n; ++i) r.values[zero_offsets[i]] = N(0);
-      break;
-    }
-    case operation::normal_matrix: {
-      mat4<N> A = identity4<N>();
-      for (std::size_t i = 0; i < 9; ++i) A(i / 3, i % 3) = from_double<N>(in[i]);
-      try {
-        const mat4<N> G = normal_matrix3(A);
-        for (std::size_t i = 0; i < 9; ++i) r.values.push_back(G(i / 3, i % 3));
-      } catch (const error&) {  // det A = 0: no inverse, no normal matrix
-        r.defined = false;
-        r.values.assign(9, N(0));
-      }
-      break;
-    }
-  }
-  return r;
+exact_outputs<N> exact_outputs_of(const test_case& c, const conventions& conv) {
+  const detail::operation_spec& spec = detail::spec_of(c.op);
+  if constexpr (std::is_same_v<N, rational>) return spec.exact_rational(c.inputs.data(), conv);
+  else if constexpr (std::is_same_v<N, ival32>) return spec.exact_ival32(c.inputs.data(), conv);
+  else return spec.exact_ival64(c.inputs.data(), conv);
 }
 
 // Canonical row-major index of the implementation's output j of a k x k matrix under its
@@ -199,77 +57,6 @@ std::size_t canonical_index(std::size_t j, std::size_t k, const conventions& con
   if (!transposed) return j;
   if (k == 4) return ((j & 3) << 2) | (j >> 2);  // the common case without a division
   return (j % k) * k + j / k;
-}
-
-// Where the float image G lies on the line through the light and V (see image_class).
-template <class N>
-image_class classify_image(const test_case& c, const conventions& conv, const double* got) {
-  for (std::size_t i = 0; i < 3; ++i)
-    if (!std::isfinite(got[i])) return image_class::nonfinite;
-  const double* in = c.inputs.data();
-  const light<N> L = canonical_light<N>(in + 4, conv);
-  const vec4<N> V = vec_from<N>(in + 8, 3, N(1));
-  const vec4<N> G = vec_from<N>(got, 3, N(1));
-  const bool same = got[0] == in[8] && got[1] == in[9] && got[2] == in[10];
-  if (L.is_directional()) {
-    // Travelling from V towards the light means moving away from a real shadow.
-    const N k = (V[0] - G[0]) * L.l[0] + (V[1] - G[1]) * L.l[1] + (V[2] - G[2]) * L.l[2];
-    const int s = sign_n(k);
-    if (s > 0) return image_class::shadow;
-    if (s < 0) return image_class::behind_receiver;
-    return same ? image_class::on_receiver : image_class::other;
-  }
-  // Point light Lc = L/w; G's position on the line is u = (G − Lc)·(V − Lc) / |V − Lc|²,
-  // compared with 1 after multiplying by w² (division-free): a = u b with b > 0.
-  const N& w = L.l[3];
-  N a(0), b(0);
-  for (std::size_t i = 0; i < 3; ++i) {
-    const N dv = w * V[i] - L.l[i];
-    a += (w * G[i] - L.l[i]) * dv;
-    b += dv * dv;
-  }
-  if (sign_n(b) == 0) return image_class::other;  // V is the light
-  if (sign_n(a) < 0) return image_class::beyond_light;
-  if (sign_n(a) == 0) return image_class::other;
-  const int beyond_v = sign_n(N(a - b));
-  if (beyond_v > 0) return image_class::shadow;
-  if (beyond_v < 0) return image_class::behind_receiver;
-  return same ? image_class::on_receiver : image_class::other;
-}
-
-// The image class a correct result must have, for the exact classes where the side matters.
-// A point exactly on the receiver (on_receiver, and line_in_plane, whose image is also the
-// point itself) is left to the ulps metric: an image one ulp away from it would otherwise
-// count as a flipped side.
-std::optional<image_class> comparable(point_class e, const conventions& conv) {
-  switch (e) {
-    case point_class::shadow: return image_class::shadow;
-    case point_class::behind_receiver:
-      return conv.clamps_behind_receiver ? image_class::on_receiver : image_class::behind_receiver;
-    case point_class::beyond_light: return image_class::beyond_light;
-    default: return std::nullopt;
-  }
-}
-
-// P·(G, 1) for the float image G, correctly rounded to double. The value cancels to a few
-// ulps of its terms (G is nearly on P), which double intervals rarely decide for double
-// inputs; then only this small dot product is redone exactly, not the whole case.
-template <class N>
-double plane_value(const double* in, const double* got) {
-  auto exact = [&](auto tag) {
-    using M = decltype(tag);
-    const plane<M> P{vec_from<M>(in, 4, M(0))};
-    return round_exact<double>(evaluate(P, vec_from<M>(got, 3, M(1))));
-  };
-  if constexpr (std::is_same_v<N, rational>) {
-    return exact(rational());
-  } else {
-    try {
-      return exact(ival64());  // f32 products are exact in its 64-bit significand
-    } catch (const detail::undecided&) {
-      return exact(rational());
-    }
-  }
 }
 
 // bits_of_error for the small ulp counts that dominate, looked up (the same values).
@@ -346,15 +133,18 @@ struct references {
   std::optional<std::size_t> pivot;
 };
 
+// A homogeneous result, and a routine that normalises the plane first when the outputs are
+// not invariant under scaling P (normalising multiplies them by the irrational |n|^-degree),
+// is graded up to scale.
 bool graded_up_to_scale(const test_case& c, const conventions& conv) {
-  return signature(c.op).matrix_size &&
-         (conv.homogeneous || (conv.normalises_plane && c.op == operation::shadow_matrix));
+  const detail::operation_spec& spec = detail::spec_of(c.op);
+  return spec.signature.matrix_size && (conv.homogeneous || (conv.normalises_plane && spec.symmetries.plane_degree > 0));
 }
 
 template <class N, class F>
 references exact_references(const test_case& c, const conventions& conv, const double* got) {
   references r;
-  const exact_outputs<N> e = canonical<N>(c, conv);
+  const exact_outputs<N> e = exact_outputs_of<N>(c, conv);
   r.all_defined = e.defined;
   r.cls = e.cls;
   const auto& sig = signature(c.op);
@@ -442,75 +232,44 @@ void grade_outputs(case_grade& g, const test_case& c, std::size_t n, const doubl
   g.max_bits = g.max_ulps ? bits_of(g.max_ulps) : 0.0;
 }
 
-void set_point_class(case_grade& g, const references& r, const conventions& conv, image_class got_class,
-                     std::optional<double> plane_value) {
-  g.exact_class = r.cls;
-  g.got_class = got_class;
-  if (const auto want = comparable(*r.cls, conv)) g.misclassified = got_class != *want;
-  else if (r.all_defined) g.misclassified = got_class == image_class::nonfinite;
-  g.plane_value = plane_value;
+// The grade of a case from its references, and what its outputs mean beyond their values.
+template <class F>
+void finish_grade(case_grade& g, const test_case& c, const conventions& conv, const double* got,
+                  const references& r, std::size_t n, oracle_mode mode) {
+  grade_outputs<F>(g, c, n, got, r);
+  const detail::operation_spec& spec = detail::spec_of(c.op);
+  if (spec.grade_meaning) {
+    g.exact_class = r.cls;
+    spec.grade_meaning(g, c, conv, got, r.all_defined, mode);
+  }
 }
 
 template <class N, class F>
-case_grade grade_with(const test_case& c, const conventions& conv, const double* got) {
+case_grade grade_with(const test_case& c, const conventions& conv, const double* got, oracle_mode mode) {
   const references r = exact_references<N, F>(c, conv, got);
   case_grade g;
-  grade_outputs<F>(g, c, signature(c.op).output_count, got, r);
-  if (c.op == operation::shadow_point) {
-    const image_class got_class = classify_image<N>(c, conv, got);
-    std::optional<double> value;
-    if (got_class != image_class::nonfinite) value = plane_value<N>(c.inputs.data(), got);
-    set_point_class(g, r, conv, got_class, value);
-  }
+  finish_grade<F>(g, c, conv, got, r, signature(c.op).output_count, mode);
   return g;
 }
 
-// The dedicated kernels (oracle_fast.h): shadow-matrix, shadow-point and reflection-matrix for
-// float cases, shadow-matrix and shadow-point for double cases; false when they do not cover or
-// decide the case.
+// The operation's dedicated kernels (oracle_fast.h); false when it has none for this type, the
+// case is graded up to scale, or they cannot decide it.
 template <class F>
 bool grade_fast(const test_case& c, const conventions& conv, const double* got, case_grade& out) {
-  if (c.op != operation::shadow_matrix && c.op != operation::shadow_point && c.op != operation::reflection_matrix)
-    return false;
-  const bool matrix = c.op != operation::shadow_point;
-  if (matrix && (conv.homogeneous || (conv.normalises_plane && c.op == operation::shadow_matrix))) return false;
+  const detail::operation_spec& spec = detail::spec_of(c.op);
+  const auto kernel = std::is_same_v<F, float> ? spec.fast_f32 : spec.fast_f64;
+  if (!kernel || graded_up_to_scale(c, conv)) return false;
   detail::fast_reference fast;
-  if constexpr (std::is_same_v<F, float>) {
-    if (!detail::fast_reference_f32(c.op, c.inputs.data(), conv, fast)) return false;
-  } else {
-    if (!detail::fast_reference_f64(c.op, c.inputs.data(), conv, fast)) return false;
-  }
+  if (!kernel(c.inputs.data(), conv, fast)) return false;
+  const std::size_t k = spec.signature.matrix_size;
   references r;
   r.all_defined = fast.defined;
   r.cls = fast.cls;
   for (std::size_t j = 0; j < fast.count; ++j) {
-    r.value[j] = fast.value[matrix ? canonical_index(j, 4, conv) : j];
+    r.value[j] = fast.value[k ? canonical_index(j, k, conv) : j];
     r.defined[j] = fast.defined;
   }
-  grade_outputs<F>(out, c, fast.count, got, r);
-  if (c.op == operation::shadow_point) {
-    const double* in = c.inputs.data();
-    using ival = std::conditional_t<std::is_same_v<F, float>, ival32, ival64>;
-    image_class got_class;
-    bool decided = false;
-    if constexpr (std::is_same_v<F, float>) decided = detail::fast_image_class_f32(in, conv, got, got_class);
-    else decided = detail::fast_image_class_f64(in, conv, got, got_class);
-    if (!decided) {
-      try {
-        got_class = classify_image<ival>(c, conv, got);
-      } catch (const detail::undecided&) {
-        got_class = classify_image<rational>(c, conv, got);
-      }
-    }
-    std::optional<double> value;
-    if (got_class != image_class::nonfinite) {
-      double v;
-      const bool fast_value = std::is_same_v<F, float> ? detail::fast_plane_value_f32(in, got, v)
-                                                       : detail::fast_plane_value_f64(in, got, v);
-      value = fast_value ? v : plane_value<ival>(in, got);
-    }
-    set_point_class(out, r, conv, got_class, value);
-  }
+  finish_grade<F>(out, c, conv, got, r, fast.count, oracle_mode::filtered);
   return true;
 }
 
@@ -526,16 +285,16 @@ case_grade grade_case(const test_case& c, const conventions& conv, const double*
       return fast;
     }
     try {
-      case_grade g = c.type == scalar_type::f32 ? grade_with<ival32, float>(c, conv, outputs)
-                                                : grade_with<ival64, double>(c, conv, outputs);
+      case_grade g = c.type == scalar_type::f32 ? grade_with<ival32, float>(c, conv, outputs, mode)
+                                                : grade_with<ival64, double>(c, conv, outputs, mode);
       if (counters) ++counters->decided_by_intervals;
       return g;
     } catch (const detail::undecided&) {
       if (counters) ++counters->fell_back_to_rationals;
     }
   }
-  return c.type == scalar_type::f32 ? grade_with<rational, float>(c, conv, outputs)
-                                    : grade_with<rational, double>(c, conv, outputs);
+  return c.type == scalar_type::f32 ? grade_with<rational, float>(c, conv, outputs, mode)
+                                    : grade_with<rational, double>(c, conv, outputs, mode);
 }
 
 }  // namespace shadowproof

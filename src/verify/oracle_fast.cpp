@@ -205,7 +205,7 @@ bool round_quotient_to_float(const accumulator& num, const denominator& den, dou
   return round_quotient_to_float(yn, en, den, out);
 }
 
-bool is_float(double x) { return static_cast<double>(static_cast<float>(x)) == x; }
+bool is_float(double x) { return representable_in_float(x); }
 
 // The canonical light: a directional light given along its rays is negated (exact).
 void canonical_light(const double* in, const conventions& conv, double* L) {
@@ -696,13 +696,20 @@ bool image_class_of(const double* in, const conventions& conv, const double* got
 
 }  // namespace
 
-bool fast_reference_f64(operation op, const double* in, const conventions& conv, fast_reference& out) {
-  if (op == operation::reflection_matrix) return reflection_matrix_f64(in, out);
-  if (op != operation::shadow_matrix && op != operation::shadow_point) return false;
+bool fast_shadow_matrix_f64(const double* in, const conventions& conv, fast_reference& out) {
   double L[4];
   canonical_light(in + 4, conv, L);
-  if (op == operation::shadow_point) return shadow_point_f64(in, L, in + 8, conv, out);
   return shadow_matrix_f64(in, L, out);
+}
+
+bool fast_shadow_point_f64(const double* in, const conventions& conv, fast_reference& out) {
+  double L[4];
+  canonical_light(in + 4, conv, L);
+  return shadow_point_f64(in, L, in + 8, conv, out);
+}
+
+bool fast_reflection_matrix_f64(const double* in, const conventions&, fast_reference& out) {
+  return reflection_matrix_f64(in, out);
 }
 
 bool fast_plane_value_f64(const double* in, const double* got, double& out) {
@@ -719,23 +726,22 @@ bool fast_plane_value_f64(const double* in, const double* got, double& out) {
   return round_to_double(acc, out) || round_to_double_exact(terms, 7, out);
 }
 
-bool fast_reference_f32(operation op, const double* in, const conventions& conv, fast_reference& out) {
-  switch (op) {
-    case operation::shadow_matrix: {
-      double L[4];
-      canonical_light(in + 4, conv, L);
-      return shadow_matrix_f32(in, L, out);
-    }
-    case operation::shadow_point: {
-      double L[4];
-      canonical_light(in + 4, conv, L);
-      if (shadow_point_quick_f32(in, L, in + 8, conv, out)) return true;
-      out = fast_reference{};
-      return shadow_point_f32(in, L, in + 8, conv, out);
-    }
-    case operation::reflection_matrix: return reflection_matrix_f32(in, out);
-    default: return false;
-  }
+bool fast_shadow_matrix_f32(const double* in, const conventions& conv, fast_reference& out) {
+  double L[4];
+  canonical_light(in + 4, conv, L);
+  return shadow_matrix_f32(in, L, out);
+}
+
+bool fast_shadow_point_f32(const double* in, const conventions& conv, fast_reference& out) {
+  double L[4];
+  canonical_light(in + 4, conv, L);
+  if (shadow_point_quick_f32(in, L, in + 8, conv, out)) return true;
+  out = fast_reference{};
+  return shadow_point_f32(in, L, in + 8, conv, out);
+}
+
+bool fast_reflection_matrix_f32(const double* in, const conventions&, fast_reference& out) {
+  return reflection_matrix_f32(in, out);
 }
 
 bool fast_image_class_f32(const double* in, const conventions& conv, const double* got, image_class& out) {

@@ -24,15 +24,17 @@ struct fast_reference {
   std::optional<point_class> cls;  ///< shadow-point only
 };
 
-/// The canonical exact outputs of an f32 case of shadow-matrix, shadow-point or
-/// reflection-matrix under `conv` (light sign, clamping; not homogeneous grading), rounded to
-/// float. False when an operation is not covered or a rounding or sign is undecided.
-bool fast_reference_f32(operation op, const double* inputs, const conventions& conv, fast_reference& out);
-
-/// The canonical exact outputs of an f64 shadow-matrix or shadow-point case, correctly rounded
-/// to double; false for other operations, inputs of extreme magnitude (beyond 2^±400 for the
-/// matrix, 2^±150 for the point), lights with w ∉ {0, 1}, or an undecided rounding.
-bool fast_reference_f64(operation op, const double* inputs, const conventions& conv, fast_reference& out);
+/// The canonical exact outputs of an f32 (f64) case of shadow-matrix, shadow-point or
+/// reflection-matrix under `conv` (light sign, clamping; not homogeneous grading), correctly
+/// rounded to the case's type. False when a rounding or sign is undecided, and for f64 also for
+/// inputs of extreme magnitude (beyond 2^±400 for the matrix, 2^±150 for the point) or lights
+/// with w ∉ {0, 1}; the caller then uses the generic oracle, which falls back to rationals.
+bool fast_shadow_matrix_f32(const double* inputs, const conventions& conv, fast_reference& out);
+bool fast_shadow_point_f32(const double* inputs, const conventions& conv, fast_reference& out);
+bool fast_reflection_matrix_f32(const double* inputs, const conventions& conv, fast_reference& out);
+bool fast_shadow_matrix_f64(const double* inputs, const conventions& conv, fast_reference& out);
+bool fast_shadow_point_f64(const double* inputs, const conventions& conv, fast_reference& out);
+bool fast_reflection_matrix_f64(const double* inputs, const conventions& conv, fast_reference& out);
 
 /// Class of the float image `got` of a shadow-point f32 case (see image_class); false for a
 /// non-float output or an undecided sign.

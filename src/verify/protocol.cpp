@@ -19,10 +19,6 @@ namespace {
 
 std::string where(std::size_t line_number) { return "line " + std::to_string(line_number); }
 
-bool representable(double x, scalar_type t) {
-  return t == scalar_type::f64 || static_cast<double>(static_cast<float>(x)) == x;
-}
-
 // A JSON value as a number exactly representable in t; nothing when it is not.
 std::optional<double> json_number(const nlohmann::json& v, scalar_type t, bool allow_special) {
   double x = 0;
@@ -94,13 +90,7 @@ test_case parse_case_line(std::string_view line, std::size_t line_number) {
       c.inputs.push_back(*x == 0 ? 0.0 : *x);
     }
   }
-  const double* in = c.inputs.data();
-  const bool has_plane = c.op == operation::shadow_matrix || c.op == operation::shadow_point ||
-                         c.op == operation::reflection_matrix;
-  if (has_plane && in[0] == 0 && in[1] == 0 && in[2] == 0) fail("the plane needs a non-zero normal (a, b, c)");
-  if ((c.op == operation::shadow_matrix || c.op == operation::shadow_point) && in[4] == 0 && in[5] == 0 &&
-      in[6] == 0 && in[7] == 0)
-    fail("the light must not be (0, 0, 0, 0)");
+  if (const std::string why = invalid_inputs_reason(c); !why.empty()) fail(why);
   return c;
 }
 

@@ -93,3 +93,14 @@ foreach(type f32 f64)
   endif()
   set_tests_properties("${name}" PROPERTIES LABELS cli)
 endforeach()
+
+# --- an operation added through the table: perspective from cot(fovy/2) -----------------------
+if(TARGET shadowproof_impls)
+  # Two roundings at most in c/aspect and in A, B: within 2 ulps on regular cases.
+  shadowproof_cli_case(NAME "check grades the perspective builders within 2 ulps on regular cases"
+    ARGS check --op perspective --impl all --cases 90 EXPECT_CODE 0
+    STDOUT_REGEX "perspective-closed-form-f32 +perspective +regular +30 +[0-2] .*perspective-reciprocal-f32 +perspective +regular +30 +[0-2] ")
+  shadowproof_cli_case(NAME "cases writes the perspective's camera input group"
+    ARGS cases --op perspective --type f32 --count 1 EXPECT_CODE 0
+    STDOUT_REGEX "\"op\": \"perspective\", \"type\": \"f32\", \"class\": \"regular\", \"camera\": \\[\"0x[^\"]+\", \"0x[^\"]+\", \"0x[^\"]+\", \"0x[^\"]+\"\\]")
+endif()

@@ -48,6 +48,10 @@ float to_nearest_float(const rational& q);
 /// Exact value of a finite float or double; throws "number.not_finite" for NaN or ±inf.
 rational exact_value(double x);
 
+/// True when x is finite and exactly a float value (so every float routine receives it
+/// unrounded).
+bool representable_in_float(double x);
+
 // ---------------------------------------------------------------------------------------
 // number_cast: one formula, many number types. Rational -> float rounds correctly;
 // float -> rational is exact; same type is the identity.

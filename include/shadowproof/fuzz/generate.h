@@ -9,6 +9,7 @@
 #include <random>
 #include <string>
 
+#include "shadowproof/core/random.h"
 #include "shadowproof/core/vec3.h"
 
 namespace shadowproof {
@@ -22,22 +23,8 @@ struct generated_case {
   std::string family;  ///< what the generator aimed at, e.g. "light_parallel", "near_parallel_ulp"
 };
 
-/// Random choices from a PRNG: `below(n)` is uniform in [0, n) by rejection (no
-/// std::uniform_int_distribution, whose output differs between standard libraries).
-class prng_source {
- public:
-  explicit prng_source(std::uint64_t seed) : rng_(seed) {}
-  std::uint64_t below(std::uint64_t n) {
-    if (n <= 1) return 0;
-    const std::uint64_t limit = std::numeric_limits<std::uint64_t>::max() - std::numeric_limits<std::uint64_t>::max() % n;
-    std::uint64_t x;
-    do x = rng_(); while (x >= limit);
-    return x % n;
-  }
-
- private:
-  std::mt19937_64 rng_;
-};
+/// The fuzzer's random choices: core/random.h's exactly uniform below(n).
+using prng_source = random_source;
 
 namespace detail {
 

@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -44,6 +45,14 @@ std::vector<test_case> generate_cases(operation op, scalar_type type, std::size_
                                       std::uint64_t seed, std::optional<input_class> cls = {},
                                       const conventions& requirements = {},
                                       std::uint64_t first_id = 0);
+
+/// The shadowproof command that prints the exact answer for exactly these inputs (as hex
+/// floats), in the conventions that matter to it (the depth convention of projections).
+std::string reproducer_command(const test_case& c, const conventions& conv);
+
+/// Why c's inputs name no instance of its operation at all (a plane with a zero normal, an
+/// all-zero light), or an empty string when they do.
+std::string invalid_inputs_reason(const test_case& c);
 
 /// log2(|P·L| / (|P| |L|)) for shadows (for shadow-point the smaller of that and the point's
 /// own closeness to the receiver, log2(|P·V| / (|P| |V|))), log2(|n| / |P|) for reflections,
