@@ -22,14 +22,27 @@ rational orient2(const point2& a, const point2& b, const point2& c) {
   return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
 }
 
+rational balanced_sum(std::vector<rational> terms) {
+  if (terms.empty()) return 0;
+  while (terms.size() > 1) {
+    const std::size_t n = terms.size();
+    std::size_t m = 0;
+    for (std::size_t i = 0; i + 1 < n; i += 2) terms[m++] = terms[i] + terms[i + 1];
+    if (n % 2 == 1) terms[m++] = std::move(terms[n - 1]);
+    terms.resize(m);
+  }
+  return std::move(terms[0]);
+}
+
 rational signed_area(const std::vector<point2>& p) {
-  rational s = 0;
+  std::vector<rational> terms;
+  terms.reserve(p.size());
   for (std::size_t i = 0; i < p.size(); ++i) {
     const auto& a = p[i];
     const auto& b = p[(i + 1) % p.size()];
-    s += a[0] * b[1] - a[1] * b[0];
+    terms.push_back(a[0] * b[1] - a[1] * b[0]);
   }
-  return s / 2;
+  return balanced_sum(std::move(terms)) / 2;
 }
 
 int largest_axis(const point3& n) {
@@ -280,30 +293,43 @@ std::vector<region_polygon> canonical_polygons(std::vector<ring_with_holes> poly
   // The boundary cycles of the region's connected open pieces: counter-clockwise ones bound
   // polygons, clockwise ones holes, each inside the smallest polygon around it. Two pieces
   // touching at a point are two polygons.
-  std::vector<std::vector<point2>> walks, outers, holes;
+  // Each input polygon with holes is a union of such pieces (a piece's boundary never leaves
+  // the polygon it was given in), so it is re-linked and its holes assigned on its own.
+  std::vector<ring_with_holes> grouped;
   for (auto& p : polygons) {
+    std::vector<std::vector<point2>> walks, outers, holes;
     walks.push_back(std::move(p.first));
     for (auto& h : p.second) walks.push_back(std::move(h));
-  }
-  for (auto& cycle : component_cycles(walks)) {
-    erase_indices(cycle, straight_vertices(cycle));
-    const int orientation = sgn(signed_area(cycle));
-    if (orientation > 0) outers.push_back(canonical_ring(std::move(cycle)));
-    else if (orientation < 0) holes.push_back(canonical_ring(std::move(cycle)));
-    else throw internal_error("a region boundary encloses no area");
-  }
-  std::vector<rational> outer_area;
-  for (const auto& o : outers) outer_area.push_back(signed_area(o));
-  std::vector<ring_with_holes> grouped;
-  for (auto& o : outers) grouped.push_back({o, {}});
-  for (auto& h : holes) {
-    const point2 q{(h[0][0] + h[1][0]) / 2, (h[0][1] + h[1][1]) / 2};
-    std::ptrdiff_t best = -1;
-    for (std::size_t i = 0; i < outers.size(); ++i)
-      if ((best < 0 || outer_area[i] < outer_area[static_cast<std::size_t>(best)]) && inside_ring(outers[i], q))
-        best = static_cast<std::ptrdiff_t>(i);
-    if (best < 0) throw internal_error("a hole of a region lies in no polygon");
-    grouped[static_cast<std::size_t>(best)].second.push_back(std::move(h));
+    for (auto& cycle : component_cycles(walks)) {
+      erase_indices(cycle, straight_vertices(cycle));
+      const int orientation = sgn(signed_area(cycle));
+      if (orientation > 0) outers.push_back(canonical_ring(std::move(cycle)));
+      else if (orientation < 0) holes.push_back(canonical_ring(std::move(cycle)));
+      else throw internal_error("a region boundary encloses no area");
+    }
+    if (outers.empty()) throw internal_error("a region polygon has no outer boundary");
+    const std::size_t first = grouped.size();
+    std::vector<rational> outer_area;
+    for (auto& o : outers) {
+      outer_area.push_back(signed_area(o));
+      grouped.push_back({std::move(o), {}});
+    }
+    for (auto& h : holes) {
+      std::size_t best = 0;
+      if (outer_area.size() > 1) {
+        // The smallest of the polygon's pieces around the hole (a point on a hole edge is on
+        // no other boundary: pieces meet only at vertices).
+        const point2 q{(h[0][0] + h[1][0]) / 2, (h[0][1] + h[1][1]) / 2};
+        std::ptrdiff_t found = -1;
+        for (std::size_t i = 0; i < outer_area.size(); ++i)
+          if ((found < 0 || outer_area[i] < outer_area[static_cast<std::size_t>(found)]) &&
+              inside_ring(grouped[first + i].first, q))
+            found = static_cast<std::ptrdiff_t>(i);
+        if (found < 0) throw internal_error("a hole of a region lies in no polygon");
+        best = static_cast<std::size_t>(found);
+      }
+      grouped[first + best].second.push_back(std::move(h));
+    }
   }
   for (auto& p : grouped) std::sort(p.second.begin(), p.second.end());
   std::sort(grouped.begin(), grouped.end());

@@ -14,7 +14,12 @@ namespace shadowproof::detail {
 /// (b − a) × (c − a): > 0 when a, b, c turn counter-clockwise, 0 when collinear.
 rational orient2(const point2& a, const point2& b, const point2& c);
 
-/// Signed area of the closed polygon p (shoelace): > 0 counter-clockwise.
+/// The sum of the terms, added pairwise in a balanced tree: rationals with unrelated
+/// denominators grow with every addition, so a running sum of n terms costs O(n²) while this
+/// costs O(M(N) log n) for a result of size N.
+rational balanced_sum(std::vector<rational> terms);
+
+/// Signed area of the closed polygon p (shoelace, summed by balanced_sum): > 0 counter-clockwise.
 rational signed_area(const std::vector<point2>& p);
 
 /// Index k of the largest |n_k| (the first one on ties): the chart of a plane with normal n

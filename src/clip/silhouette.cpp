@@ -121,27 +121,36 @@ std::vector<point2> vertex_points(arrangement& arr) {
 
 // Twice the signed area enclosed by one boundary cycle (shoelace, exact).
 template <class Circulator>
-rational twice_ccb_area(const std::vector<point2>& p, Circulator first) {
-  rational s = 0;
+void twice_ccb_area(const std::vector<point2>& p, Circulator first, std::vector<rational>& terms) {
   auto h = first;
   do {
     const point2& a = p[h->source()->data().index];
     const point2& b = p[h->target()->data().index];
-    s += a[0] * b[1] - a[1] * b[0];
+    terms.push_back(a[0] * b[1] - a[1] * b[0]);
   } while (++h != first);
-  return s;
+}
+
+// Twice the area of every bounded face with `in(face)`, indexed by face id (0 elsewhere).
+template <class In>
+std::vector<rational> twice_face_areas(const arrangement& arr, const std::vector<point2>& p, In in) {
+  std::vector<rational> out(arr.number_of_faces());
+  for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f) {
+    if (f->is_unbounded() || !in(f)) continue;
+    std::vector<rational> terms;
+    twice_ccb_area(p, f->outer_ccb(), terms);
+    for (auto h = f->inner_ccbs_begin(); h != f->inner_ccbs_end(); ++h) twice_ccb_area(p, *h, terms);
+    out[f->data().id] = balanced_sum(std::move(terms));
+  }
+  return out;
 }
 
 // The sum of the areas of the faces with `in(face)`.
 template <class In>
-rational area_of(const arrangement& arr, const std::vector<point2>& p, In in) {
-  rational twice = 0;
-  for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f) {
-    if (f->is_unbounded() || !in(f)) continue;
-    twice += twice_ccb_area(p, f->outer_ccb());
-    for (auto h = f->inner_ccbs_begin(); h != f->inner_ccbs_end(); ++h) twice += twice_ccb_area(p, *h);
-  }
-  return twice / 2;
+rational area_of(const arrangement& arr, const std::vector<rational>& twice_areas, In in) {
+  std::vector<rational> terms;
+  for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f)
+    if (!f->is_unbounded() && in(f)) terms.push_back(twice_areas[f->data().id]);
+  return balanced_sum(std::move(terms)) / 2;
 }
 
 // The boundary of the region of faces with `in(face)`: its polygons with holes, read off the
@@ -249,9 +258,10 @@ shadow_region silhouette_region(const scene& s, const plane<rational>& P, const 
 
   std::vector<xcurve> curves;
   for (const auto& chain : chains) add_chain(curves, chain);
-  const auto add_ring = [&](const std::vector<point2>& ring) {
-    for (std::size_t i = 0; i < ring.size(); ++i)
-      curves.push_back(make_curve(to_cpoint(ring[i]), to_cpoint(ring[(i + 1) % ring.size()]), 0, 1, false));
+  const auto add_ring = [&](const std::vector<point2>& boundary) {
+    for (std::size_t i = 0; i < boundary.size(); ++i)
+      curves.push_back(
+          make_curve(to_cpoint(boundary[i]), to_cpoint(boundary[(i + 1) % boundary.size()]), 0, 1, false));
   };
   add_ring(setup.receiver_outer);
   for (const auto& h : setup.receiver_holes) add_ring(h);  // clockwise: −1 inside
@@ -269,8 +279,9 @@ shadow_region silhouette_region(const scene& s, const plane<rational>& P, const 
   const auto in_shadow = [](const auto& f) { return f->data().shadow > 0; };
   const auto in_receiver = [](const auto& f) { return f->data().receiver > 0; };
   const auto in_result = [&](const auto& f) { return in_shadow(f) && in_receiver(f); };
+  const std::vector<rational> twice_areas = twice_face_areas(arr, points, in_shadow);  // result ⊆ shadow
 
-  const rational all_area = area_of(arr, points, in_shadow);
+  const rational all_area = area_of(arr, twice_areas, in_shadow);
   if (options.detect_overlap && s.casters.size() > 1) {
     rational sum = 0;
     for (const auto& chain : chains) {
@@ -279,13 +290,13 @@ shadow_region silhouette_region(const scene& s, const plane<rational>& P, const 
       arrangement one;
       CGAL::insert(one, own.begin(), own.end());
       assign_windings(one);
-      sum += area_of(one, vertex_points(one), in_shadow);
+      sum += area_of(one, twice_face_areas(one, vertex_points(one), in_shadow), in_shadow);
     }
     if (sum != all_area) cases.insert(shadow_case::shadows_overlap);
   }
   for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f)
     if (in_shadow(f) && !in_receiver(f)) cases.insert(shadow_case::shadow_outside_receiver);
-  r.chart_area = area_of(arr, points, in_result);
+  r.chart_area = area_of(arr, twice_areas, in_result);
   r.area_squared = r.chart_area * r.chart_area * r.chart.area_scale_squared;
   r.polygons = canonical_polygons(region_boundary(arr, points, in_result), r.chart);
 
