@@ -1,117 +1,249 @@
-// Cases graded per second: the interval-filtered oracle, the all-rational oracle, and the
-// float implementation's own evaluation, on the same cases in the same run.
-//   bench/bench_oracle --benchmark_counters_tabular=true
-// items_per_second is cases per second; compare rows with the same <impl>/<class>.
-//   bench/bench_oracle --agree=1000000 [--impl=NAME]
-// instead grades that many regular and that many near-degenerate cases per implementation with
-// both oracles and reports any difference (exit 1), the check the unit test runs on a sample.
-//   bench/bench_oracle --ratio=ROUNDS [--impl=NAME]
-// prints the README's table: cases per second of the float code, the filtered and the naive
-// oracle, alternating them ROUNDS times on the same cases and keeping each one's best round.
+// Cases graded per second, for every operation and type, all in the same run on the same cases:
+// the float code itself, the filtered oracle one case at a time (grade_case), the filtered
+// oracle over a batch (compute_references + grade_batch, generic and AVX2 filters), and the
+// all-rational oracle; their ratios, and how many cases the filtered oracle left to rationals.
+//
+//   bench/bench_oracle [--table=ROUNDS]   the table (the default, 3 rounds)
+//   bench/bench_oracle --threads=ROUNDS   the batch grader and run_and_grade_in_parallel on 1
+//                                         and 2 threads, wall-clock
+//   bench/bench_oracle --agree=N [--impl=NAME]
+//       grades N regular and N near-degenerate cases per implementation with both oracles and
+//       reports any difference (exit 1), the check the unit tests run on a sample.
+//   bench/bench_oracle --gbench [Google Benchmark flags]   the same measurements per benchmark
+//
+// Method. Cases and the float code's outputs are generated before any clock starts. Each round
+// times every variant in turn on the same cases (so a change of load on a shared machine hits
+// them alike) and each variant keeps its best round, in thread CPU time; every result feeds a
+// checksum that is printed, so nothing can be optimised away. The load average is printed
+// before and after: on a machine shared with other work, compare ratios, not rates.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <ctime>
-
+#include <functional>
 #include <memory>
 #include <optional>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "shadowproof/verify/operation.h"
-#include "shadowproof/verify/implementation.h"
+#include "shadowproof/constructions/project.h"
 #include "shadowproof/impls/builtin.h"
+#include "shadowproof/verify/batch.h"
 #include "shadowproof/verify/cases.h"
 #include "shadowproof/verify/grade.h"
+#include "shadowproof/verify/implementation.h"
+#include "shadowproof/verify/operation.h"
+#include "shadowproof/verify/parallel.h"
 #include "shadowproof/verify/protocol.h"
+#include "shadowproof/verify/report.h"
 
 namespace {
 
 using namespace shadowproof;
 
-struct fixture {
-  const implementation* impl = nullptr;
+// ---------------------------------------------------------------------------------------------
+// The implementation timed for each operation and type: a built-in one graded at the canonical
+// scale, or the library's own formula in that type where no built-in one exists.
+
+template <class T>
+void library_ortho(const double* in, double* out) {
+  const auto M = orthographic<T>(static_cast<T>(in[0]), static_cast<T>(in[1]), static_cast<T>(in[2]),
+                                 static_cast<T>(in[3]), static_cast<T>(in[4]), static_cast<T>(in[5]),
+                                 depth_convention::gl);
+  for (std::size_t i = 0; i < 16; ++i) out[i] = M(i / 4, i % 4);
+}
+
+implementation representative(operation op, scalar_type type) {
+  static const char* const preferred[] = {"seed000-general", "eigen-intersection", "reflect-divide",
+                                          "ortho-closed-form", "frustum-closed-form", "normal-inverse-transpose",
+                                          "perspective-closed-form"};
+  const std::string name = std::string(preferred[static_cast<int>(op)]) + "-" + std::string(to_string(type));
+  for (const implementation& impl : builtin_implementations())
+    if (impl.name == name) return impl;
+  if (op == operation::ortho && type == scalar_type::f64)
+    return {"library-ortho-f64", op, type, conventions{}, "orthographic<double> (project.h)", library_ortho<double>};
+  throw std::runtime_error("no implementation for " + name);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Clocks and sinks.
+
+double thread_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+double wall_seconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+std::string load_average() {
+  double load[3] = {0, 0, 0};
+  if (getloadavg(load, 3) != 3) return "unknown";
+  char text[64];
+  std::snprintf(text, sizeof text, "%.2f %.2f %.2f", load[0], load[1], load[2]);
+  return text;
+}
+
+std::string rate(double cases_per_second) {
+  char text[32];
+  if (cases_per_second >= 1e6) std::snprintf(text, sizeof text, "%.3g M/s", cases_per_second / 1e6);
+  else std::snprintf(text, sizeof text, "%.3g k/s", cases_per_second / 1e3);
+  return text;
+}
+
+std::uint64_t checksum = 0;  // every timed result feeds it; printed at the end
+
+// ---------------------------------------------------------------------------------------------
+// One operation, type and class: the same cases for every variant.
+
+struct workload {
+  implementation impl;
   std::vector<test_case> cases;
-  std::vector<std::vector<double>> outputs;
+  std::vector<std::vector<double>> outputs;  // the float code's, per case
+  case_batch batch;                          // the same cases and outputs, as columns
 };
 
-const fixture& make_fixture(const std::string& name, std::optional<input_class> cls) {
-  static std::vector<std::unique_ptr<fixture>> cache;
-  static std::vector<std::string> keys;
-  const std::string key = name + "/" + (cls ? std::string(to_string(*cls)) : "mixed");
-  for (std::size_t i = 0; i < keys.size(); ++i)
-    if (keys[i] == key) return *cache[i];
-  auto f = std::make_unique<fixture>();
-  for (const auto& impl : builtin_implementations())
-    if (impl.name == name) f->impl = &impl;
-  if (!f->impl) throw std::runtime_error("no implementation " + name);
-  f->cases = generate_cases(f->impl->op, f->impl->type, 2000, 99, cls, f->impl->conv);
-  for (const auto& c : f->cases) {
-    std::vector<double> out(signature(c.op).output_count);
-    f->impl->run(c.inputs.data(), out.data());
-    f->outputs.push_back(std::move(out));
+workload make_workload(operation op, scalar_type type, std::optional<input_class> cls, std::size_t count) {
+  workload w{representative(op, type), {}, {}, {}};
+  w.cases = generate_cases(op, type, count, 99, cls, w.impl.conv);
+  const std::size_t n = signature(op).output_count;
+  for (const auto& c : w.cases) {
+    std::vector<double> out(n, 0.0);
+    w.impl.run(c.inputs.data(), out.data());
+    w.outputs.push_back(std::move(out));
   }
-  keys.push_back(key);
-  cache.push_back(std::move(f));
-  return *cache.back();
+  w.batch = make_batch(w.cases);
+  run_implementation(w.impl, w.batch);
+  return w;
 }
 
-void float_evaluation(benchmark::State& state, const std::string& name, std::optional<input_class> cls) {
-  const fixture& f = make_fixture(name, cls);
-  std::vector<double> out(signature(f.impl->op).output_count);
-  for (auto _ : state) {
-    for (const auto& c : f.cases) {
-      f.impl->run(c.inputs.data(), out.data());
-      benchmark::DoNotOptimize(out.data());
-    }
-  }
-  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * f.cases.size()));
+struct timings {
+  double float_code = 1e300, scalar = 1e300, batch_generic = 1e300, batch_avx2 = 1e300, rational = 1e300;
+  double rational_fraction = 0;  // of the filtered scalar oracle's cases
+};
+
+// Seconds per case of `f(repeats)` over `cases` cases, the best of this and previous rounds.
+void keep_best(double& best, std::size_t cases, std::size_t repeats, const std::function<void()>& f) {
+  const double t0 = thread_seconds();
+  for (std::size_t r = 0; r < repeats; ++r) f();
+  best = std::min(best, (thread_seconds() - t0) / static_cast<double>(cases * repeats));
 }
 
-void oracle(benchmark::State& state, const std::string& name, std::optional<input_class> cls, oracle_mode mode) {
-  const fixture& f = make_fixture(name, cls);
+timings measure(workload& w, std::size_t rounds) {
+  timings t;
+  const std::size_t n = w.cases.size(), out_count = signature(w.impl.op).output_count;
+  const std::size_t rational_cases = std::min<std::size_t>(n, 256);
+  std::vector<double> out(out_count);
+  batch_references refs;
+  batch_grades grades;
   oracle_counters counters;
-  for (auto _ : state) {
-    for (std::size_t i = 0; i < f.cases.size(); ++i) {
-      case_grade g = grade_case(f.cases[i], f.impl->conv, f.outputs[i].data(), mode, &counters);
-      benchmark::DoNotOptimize(g.max_ulps);
-    }
+  for (std::size_t r = 0; r < rounds; ++r) {
+    keep_best(t.float_code, n, 20, [&] {
+      for (const auto& c : w.cases) {
+        w.impl.run(c.inputs.data(), out.data());
+        benchmark::DoNotOptimize(out.data());
+        checksum += static_cast<std::uint64_t>(out[0] != 0);
+      }
+    });
+    counters = {};
+    keep_best(t.scalar, n, 2, [&] {
+      for (std::size_t i = 0; i < n; ++i)
+        checksum += grade_case(w.cases[i], w.impl.conv, w.outputs[i].data(), oracle_mode::filtered, &counters).max_ulps;
+    });
+    keep_best(t.batch_generic, n, 2, [&] {
+      compute_references(w.batch, w.impl.conv, refs, nullptr, batch_path::generic);
+      grade_batch(w.batch, w.impl.conv, refs, grades, batch_path::generic);
+      checksum += grades.max_ulps[n / 2] + grades.ulps[n / 3];
+    });
+    if (avx2_batch_available())
+      keep_best(t.batch_avx2, n, 2, [&] {
+        compute_references(w.batch, w.impl.conv, refs, nullptr, batch_path::avx2);
+        grade_batch(w.batch, w.impl.conv, refs, grades, batch_path::avx2);
+        checksum += grades.max_ulps[n / 2] + grades.ulps[n / 3];
+      });
+    keep_best(t.rational, rational_cases, 1, [&] {
+      for (std::size_t i = 0; i < rational_cases; ++i)
+        checksum += grade_case(w.cases[i], w.impl.conv, w.outputs[i].data(), oracle_mode::naive).max_ulps;
+    });
   }
-  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * f.cases.size()));
-  if (mode == oracle_mode::filtered) {
-    const double total = static_cast<double>(counters.decided_by_intervals + counters.fell_back_to_rationals);
-    state.counters["decided_by_intervals"] = static_cast<double>(counters.decided_by_intervals) / total;
-  }
+  const double total = static_cast<double>(counters.decided_by_intervals + counters.fell_back_to_rationals);
+  t.rational_fraction = total > 0 ? static_cast<double>(counters.fell_back_to_rationals) / total : 0;
+  return t;
 }
 
-void register_all() {
-  const std::vector<std::string> names{"seed000-general-f32", "seed000-general-f64", "eigen-intersection-f32",
-                                       "eigen-intersection-f64", "reflect-divide-f32", "glm-frustum-f32",
-                                       "glm-inverse-transpose-f64"};
-  const std::vector<std::optional<input_class>> classes{input_class::regular, input_class::near_degenerate,
-                                                        std::nullopt};
-  for (const auto& name : names) {
-    bool present = false;
-    for (const auto& impl : builtin_implementations()) present = present || impl.name == name;
-    if (!present) continue;  // engine not installed
-    for (const auto& cls : classes) {
-      const std::string suffix = name + "/" + (cls ? std::string(to_string(*cls)) : "mixed");
-      benchmark::RegisterBenchmark(("float_impl/" + suffix).c_str(), float_evaluation, name, cls)
-          ->Unit(benchmark::kMicrosecond);
-      benchmark::RegisterBenchmark(("filtered_oracle/" + suffix).c_str(), oracle, name, cls, oracle_mode::filtered)
-          ->Unit(benchmark::kMicrosecond);
-      benchmark::RegisterBenchmark(("naive_oracle/" + suffix).c_str(), oracle, name, cls, oracle_mode::naive)
-          ->Unit(benchmark::kMicrosecond);
-    }
-  }
+int table(std::size_t rounds) {
+  std::printf("load average before: %s; AVX2 filter: %s; %zu rounds, best kept\n\n", load_average().c_str(),
+              avx2_batch_available() ? "yes" : "no (not measured)", rounds);
+  std::printf("| operation / type / class | implementation | float code | filtered, one case | filtered, batch "
+              "(generic) | filtered, batch (AVX2) | all-rational | batch ÷ rational | float ÷ batch | decided by "
+              "rationals |\n|---|---|---|---|---|---|---|---|---|---|\n");
+  for (operation op : all_operations())
+    for (scalar_type type : {scalar_type::f32, scalar_type::f64})
+      for (input_class cls : {input_class::regular, input_class::near_degenerate}) {
+        workload w = make_workload(op, type, cls, 4096);
+        const timings t = measure(w, rounds);
+        const double batch = std::min(t.batch_generic, t.batch_avx2);
+        std::printf("| %s / %s / %s | %s | %s | %s | %s | %s | %s | %.0f× | %.1f× | %.3f%% |\n",
+                    std::string(to_string(op)).c_str(), std::string(to_string(type)).c_str(),
+                    std::string(to_string(cls)).c_str(), w.impl.name.c_str(), rate(1 / t.float_code).c_str(),
+                    rate(1 / t.scalar).c_str(), rate(1 / t.batch_generic).c_str(),
+                    t.batch_avx2 < 1e300 ? rate(1 / t.batch_avx2).c_str() : "–", rate(1 / t.rational).c_str(),
+                    t.rational / batch, batch / t.float_code, 100 * t.rational_fraction);
+        std::fflush(stdout);
+      }
+  std::printf("\nload average after: %s; checksum %llu\n", load_average().c_str(),
+              static_cast<unsigned long long>(checksum));
+  return 0;
 }
 
-}  // namespace
+// 1 and 2 threads on the same large batch of every implementation's cases, wall-clock, the
+// best of `rounds` alternating rounds: the batch grader (grade_batch_in_parallel, running the
+// implementation too) and run_and_grade_in_parallel (grade_case per case).
+int threads(std::size_t rounds) {
+  std::printf("load average before: %s; %u processors\n\n", load_average().c_str(), default_jobs());
+  std::vector<std::pair<const implementation*, std::vector<test_case>>> work;
+  std::size_t total = 0;
+  for (const implementation& impl : builtin_implementations()) {
+    work.emplace_back(&impl, generate_cases(impl.op, impl.type, 5000, 1, std::nullopt, impl.conv));
+    total += 5000;
+  }
+  double best_batch[3] = {1e300, 1e300, 1e300}, best_scalar[3] = {1e300, 1e300, 1e300};
+  for (std::size_t r = 0; r < rounds; ++r)
+    for (unsigned jobs : {1u, 2u}) {
+      double t0 = wall_seconds();
+      for (auto& [impl, cases] : work) {
+        case_batch batch = make_batch(cases);
+        batch_references refs;
+        batch_grades grades;
+        grade_batch_in_parallel(batch, impl->conv, refs, grades, jobs, impl);
+        checksum += grades.max_ulps.back();
+      }
+      best_batch[jobs] = std::min(best_batch[jobs], wall_seconds() - t0);
+      t0 = wall_seconds();
+      for (auto& [impl, cases] : work) checksum += run_and_grade_in_parallel(*impl, cases, jobs).back().max_ulps;
+      best_scalar[jobs] = std::min(best_scalar[jobs], wall_seconds() - t0);
+    }
+  std::printf("| %zu cases (%zu implementations × 5000), run and graded | 1 thread | 2 threads | 2 ÷ 1 |\n"
+              "|---|---|---|---|\n",
+              total, work.size());
+  std::printf("| batch grader | %s | %s | %.2f× |\n", rate(total / best_batch[1]).c_str(),
+              rate(total / best_batch[2]).c_str(), best_batch[1] / best_batch[2]);
+  std::printf("| run_and_grade (grade_case per case) | %s | %s | %.2f× |\n", rate(total / best_scalar[1]).c_str(),
+              rate(total / best_scalar[2]).c_str(), best_scalar[1] / best_scalar[2]);
+  std::printf("\nload average after: %s; checksum %llu\n", load_average().c_str(),
+              static_cast<unsigned long long>(checksum));
+  return 0;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Agreement of the two oracles on many cases.
 
 bool same_grade(const case_grade& a, const case_grade& b) {
   if (a.outputs.size() != b.outputs.size()) return false;
@@ -145,9 +277,9 @@ int agree(std::size_t count, const std::string& only) {
           }
         }
       }
-      std::printf("%-32s %-16s %zu cases: %zu differ, %.1f%% decided by intervals\n", impl.name.c_str(),
+      std::printf("%-32s %-16s %zu cases: %zu differ, %.3f%% decided by rationals\n", impl.name.c_str(),
                   std::string(to_string(cls)).c_str(), count, differ,
-                  100.0 * static_cast<double>(counters.decided_by_intervals) / static_cast<double>(count));
+                  100.0 * static_cast<double>(counters.fell_back_to_rationals) / static_cast<double>(count));
       std::fflush(stdout);
       failures += differ ? 1 : 0;
     }
@@ -155,80 +287,60 @@ int agree(std::size_t count, const std::string& only) {
   return failures ? 1 : 0;
 }
 
-// Seconds of this thread's processor time.
-double thread_seconds() {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
+// ---------------------------------------------------------------------------------------------
+// The same measurements as Google Benchmark benchmarks (one per variant and operation).
 
-// Rounds alternate the float code, the filtered oracle and the naive oracle on the same 2000
-// cases, so that a change of load on a shared machine hits all three alike; each one's best
-// round (least thread time per case) is kept.
-int ratio(std::size_t rounds, const std::string& only) {
-  const std::vector<std::string> names{"seed000-general-f32", "eigen-intersection-f32", "reflect-divide-f32",
-                                       "seed000-general-f64", "eigen-intersection-f64", "reflect-divide-f64"};
-  std::printf("| implementation / class | float code itself | filtered oracle | all-rational oracle "
-              "| filtered ÷ rational | float code ÷ filtered |\n| --- | --- | --- | --- | --- | --- |\n");
-  for (const auto& name : names) {
-    if (!only.empty() && name != only) continue;
-    bool present = false;
-    for (const auto& impl : builtin_implementations()) present = present || impl.name == name;
-    if (!present) continue;
-    for (input_class cls : {input_class::regular, input_class::near_degenerate}) {
-      const fixture& f = make_fixture(name, cls);
-      std::vector<double> out(signature(f.impl->op).output_count);
-      const double n = static_cast<double>(f.cases.size());
-      double best_float = 1e300, best_filtered = 1e300, best_naive = 1e300;
-      std::uint64_t sink = 0;
-      for (std::size_t r = 0; r < rounds; ++r) {
-        double t0 = thread_seconds();
-        for (int k = 0; k < 100; ++k)
-          for (const auto& c : f.cases) {
-            f.impl->run(c.inputs.data(), out.data());
+void register_benchmarks() {
+  for (operation op : all_operations())
+    for (scalar_type type : {scalar_type::f32, scalar_type::f64}) {
+      const std::string suffix = std::string(to_string(op)) + "/" + std::string(to_string(type));
+      auto w = std::make_shared<workload>(make_workload(op, type, input_class::regular, 4096));
+      benchmark::RegisterBenchmark(("float_code/" + suffix).c_str(), [w](benchmark::State& state) {
+        std::vector<double> out(signature(w->impl.op).output_count);
+        for (auto _ : state)
+          for (const auto& c : w->cases) {
+            w->impl.run(c.inputs.data(), out.data());
             benchmark::DoNotOptimize(out.data());
           }
-        best_float = std::min(best_float, (thread_seconds() - t0) / (100 * n));
-        t0 = thread_seconds();
-        for (int k = 0; k < 5; ++k)
-          for (std::size_t i = 0; i < f.cases.size(); ++i)
-            sink += grade_case(f.cases[i], f.impl->conv, f.outputs[i].data(), oracle_mode::filtered).max_ulps;
-        best_filtered = std::min(best_filtered, (thread_seconds() - t0) / (5 * n));
-        t0 = thread_seconds();
-        for (std::size_t i = 0; i < f.cases.size(); ++i)
-          sink += grade_case(f.cases[i], f.impl->conv, f.outputs[i].data(), oracle_mode::naive).max_ulps;
-        best_naive = std::min(best_naive, (thread_seconds() - t0) / n);
-      }
-      benchmark::DoNotOptimize(sink);
-      auto rate = [](double seconds) {
-        char text[32];
-        const double per_second = 1 / seconds;
-        if (per_second >= 1e6) std::snprintf(text, sizeof text, "%.3g M/s", per_second / 1e6);
-        else std::snprintf(text, sizeof text, "%.3g k/s", per_second / 1e3);
-        return std::string(text);
-      };
-      std::printf("| %s / %s | %s | %s | %s | %.1f× | %.1f× |\n", name.c_str(), std::string(to_string(cls)).c_str(),
-                  rate(best_float).c_str(), rate(best_filtered).c_str(), rate(best_naive).c_str(),
-                  best_naive / best_filtered, best_filtered / best_float);
-      std::fflush(stdout);
+        state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * w->cases.size()));
+      });
+      benchmark::RegisterBenchmark(("filtered_one_case/" + suffix).c_str(), [w](benchmark::State& state) {
+        for (auto _ : state)
+          for (std::size_t i = 0; i < w->cases.size(); ++i)
+            benchmark::DoNotOptimize(grade_case(w->cases[i], w->impl.conv, w->outputs[i].data()).max_ulps);
+        state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * w->cases.size()));
+      });
+      benchmark::RegisterBenchmark(("filtered_batch/" + suffix).c_str(), [w](benchmark::State& state) {
+        batch_references refs;
+        batch_grades grades;
+        for (auto _ : state) {
+          compute_references(w->batch, w->impl.conv, refs);
+          grade_batch(w->batch, w->impl.conv, refs, grades);
+          benchmark::DoNotOptimize(grades.max_ulps.data());
+        }
+        state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * w->cases.size()));
+      });
     }
-  }
-  return 0;
 }
 
+}  // namespace
+
 int main(int argc, char** argv) {
-  std::size_t agree_count = 0, ratio_rounds = 0;
+  std::size_t agree_count = 0, table_rounds = 3, thread_rounds = 0;
+  bool gbench = false;
   std::string only;
   for (int i = 1; i < argc; ++i) {
     if (std::strncmp(argv[i], "--agree=", 8) == 0) agree_count = std::stoul(argv[i] + 8);
-    if (std::strncmp(argv[i], "--ratio=", 8) == 0) ratio_rounds = std::stoul(argv[i] + 8);
-    if (std::strncmp(argv[i], "--impl=", 7) == 0) only = argv[i] + 7;
+    else if (std::strncmp(argv[i], "--table=", 8) == 0) table_rounds = std::stoul(argv[i] + 8);
+    else if (std::strncmp(argv[i], "--threads=", 10) == 0) thread_rounds = std::stoul(argv[i] + 10);
+    else if (std::strncmp(argv[i], "--impl=", 7) == 0) only = argv[i] + 7;
+    else if (std::strcmp(argv[i], "--gbench") == 0) gbench = true;
   }
   if (agree_count) return agree(agree_count, only);
-  if (ratio_rounds) return ratio(ratio_rounds, only);
-  register_all();
+  if (thread_rounds) return threads(thread_rounds);
+  if (!gbench) return table(table_rounds);
+  register_benchmarks();
   benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   return 0;

@@ -6,6 +6,9 @@ set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${1:-$root/build/asan-ubsan}"
 "$root/scripts/setup.sh"
+# The conformance table's adapters (npm ci of the pinned libraries, the Vulkan runner): ctest
+# runs a sample of every one (label conformance).
+"$root/conformance/setup.sh" "$root/build/conformance-vk"
 (cd "$root" && cmake --preset asan-ubsan -B "$build")
 cmake --build "$build" -j"$(nproc)"
 # A sanitizer report fails the test that triggered it.
@@ -15,12 +18,13 @@ export LSAN_OPTIONS="suppressions=$root/tests/sanitizers/lsan.supp:print_suppres
 ctest --test-dir "$build" --output-on-failure -j"$(nproc)"
 
 # The oracle's exact arithmetic on an FMA target (preset fma, -march=x86-64-v3 -O2): the
-# agreement tests of the dedicated kernels with the rational oracle, where the compiler could
-# contract a*b+c. Needs a CPU with AVX2 and FMA; skipped (and said so) on one without.
+# error-free transformations' own tests and the agreement tests of the dedicated kernels with
+# the rational oracle, where the compiler could contract a*b+c. Needs a CPU with AVX2 and FMA;
+# skipped (and said so) on one without.
 if grep -qw fma /proc/cpuinfo && grep -qw avx2 /proc/cpuinfo; then
   (cd "$root" && cmake --preset fma -B "$root/build/fma" >/dev/null)
-  cmake --build "$root/build/fma" -j"$(nproc)" --target test_verify test_number test_ulp
-  ctest --test-dir "$root/build/fma" -R "^test_(verify|number|ulp):" --output-on-failure -j"$(nproc)"
+  cmake --build "$root/build/fma" -j"$(nproc)" --target test_verify test_oracle_kernels test_batch test_number test_ulp
+  ctest --test-dir "$root/build/fma" -R "^test_(verify|oracle_kernels|batch|number|ulp):" --output-on-failure -j"$(nproc)"
 else
   echo "test.sh: this CPU has no FMA/AVX2; the fma preset's tests were not run"
 fi

@@ -19,7 +19,18 @@ struct cases_options {
   std::size_t count = 100;
   std::uint64_t seed = 1;
   bool directional = false;
+  std::vector<std::string> conventions;  // name=value, written into every line
 };
+
+// Applies "name=value" texts (the protocol's convention spellings) to conv.
+void apply_conventions(conventions& conv, const std::vector<std::string>& texts) {
+  for (const auto& t : texts) {
+    const auto eq = t.find('=');
+    if (eq == std::string::npos)
+      throw error(errc::protocol_convention, "--convention '" + t + "' must read name=value, e.g. depth=d3d");
+    set_convention(conv, t.substr(0, eq), t.substr(eq + 1));
+  }
+}
 
 int run_cases(const cases_options& o) {
   const auto op = operation_from_string(o.op);
@@ -36,9 +47,10 @@ int run_cases(const cases_options& o) {
                   "unknown --class '" + o.cls + "'; expected regular, near-degenerate or degenerate");
   }
   conventions requirements;
+  apply_conventions(requirements, o.conventions);
   requirements.directional_only = o.directional;
   for (const auto& c : generate_cases(*op, *type, o.count, o.seed, cls, requirements))
-    std::cout << case_json_line(c) << '\n';
+    std::cout << case_json_line(c, requirements) << '\n';
   return 0;
 }
 
@@ -53,6 +65,10 @@ const command_registration reg{command{
       app.add_option("--seed", o->seed, "generator seed (same seed, byte-identical output)")->capture_default_str();
       app.add_option("--class", o->cls, "only regular, near-degenerate or degenerate cases (default: cycle)");
       app.add_flag("--directional", o->directional, "directional lights only (w = 0)");
+      app.add_option("--convention", o->conventions,
+                     "name=value, repeatable: a convention written into every line, in which the inputs "
+                     "are written and the outputs read (docs/protocol.md), e.g. depth=d3d, handedness=left, "
+                     "angle=degrees, plane=n.x=d, matrix3=mat4, layout=column-major, symmetric=true");
       return [o] { return run_cases(*o); };
     }}};
 

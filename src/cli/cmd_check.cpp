@@ -163,7 +163,7 @@ int run_check(const check_options& o) {
       report_row row{r.impl->name, r.impl->op, r.impl->type, std::string(to_string(cls)), summarize(part)};
       if (o.max_ulps && (row.summary.max_ulps > *o.max_ulps || row.summary.nonfinite > 0)) exceeded = true;
       if (o.json) {
-        nlohmann::json j = summary_json(row.summary, lookup, r.impl->conv.depth);
+        nlohmann::json j = summary_json(row.summary, lookup, [&](std::uint64_t) -> const conventions& { return r.impl->conv; });
         j["impl"] = r.impl->name;
         j["op"] = std::string(to_string(r.impl->op));
         j["type"] = std::string(to_string(r.impl->type));
@@ -195,7 +195,7 @@ int run_check(const check_options& o) {
       std::cout << "  " << r.impl->name << ": every output correctly rounded\n";
       continue;
     }
-    print_worst(std::cout, r.impl->name, s.worst[0], r.cases.at(s.worst[0].id), r.impl->conv.depth);
+    print_worst(std::cout, r.impl->name, s.worst[0], r.cases.at(s.worst[0].id), r.impl->conv);
   }
   std::cout << "\nOracle: " << counters.decided_by_intervals << " cases decided by interval arithmetic, "
             << counters.fell_back_to_rationals << " by exact rationals.\n";

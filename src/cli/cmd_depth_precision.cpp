@@ -115,6 +115,9 @@ void write_svg(const std::string& path, const std::string& title, const std::vec
 
 int run_depth_precision(const depth_precision_options& o, const global_options& g) {
   const depth_convention chosen = chosen_convention(o.projection);
+  if (o.projection.handedness_option->count() > 0)
+    throw error(errc::cli_unused_option, "--handedness does not apply to depth-precision, which measures eye "
+                                         "distances along -z");
   const depth_format format = parse_depth_format(o.format_text);
   const rational from = parse_flag_number(o.from_text, "--from", g.limits);
   const rational to = parse_flag_number(o.to_text, "--to", g.limits);

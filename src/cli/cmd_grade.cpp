@@ -26,6 +26,7 @@ struct grade_options {
   bool homogeneous = false;
   bool json = false;
   std::optional<std::uint64_t> max_ulps;
+  std::vector<std::string> conventions;  // name=value
 };
 
 std::vector<std::string> read_lines(const std::string& path, const char* what) {
@@ -51,12 +52,20 @@ int run_grade(const grade_options& o) {
   else throw error(errc::grade_light, "unknown --light '" + o.light + "'; expected towards-light or along-rays");
   conv.homogeneous = o.homogeneous;
   conv.depth = parse_depth_convention(o.depth);
+  for (const auto& t : o.conventions) {
+    const auto eq = t.find('=');
+    if (eq == std::string::npos)
+      throw error(errc::protocol_convention, "--convention '" + t + "' must read name=value, e.g. depth=d3d");
+    set_convention(conv, t.substr(0, eq), t.substr(eq + 1));
+  }
 
   const auto case_lines = read_lines(o.cases_path, "cases");
   std::vector<test_case> cases;
+  std::vector<conventions> case_conv;  // the command line's, overridden by the line's own
   std::map<std::uint64_t, std::size_t> index;
   for (std::size_t i = 0; i < case_lines.size(); ++i) {
-    cases.push_back(parse_case_line(case_lines[i], i + 1));
+    case_conv.push_back(conv);
+    cases.push_back(parse_case_line(case_lines[i], i + 1, case_conv.back()));
     if (!index.emplace(cases.back().id, i).second)
       throw error(errc::grade_duplicate_id, o.cases_path + " line " + std::to_string(i + 1) + ": case id " +
                                             std::to_string(cases.back().id) + " appears twice");
@@ -84,23 +93,25 @@ int run_grade(const grade_options& o) {
                                             std::to_string(id) + " graded twice");
     seen[id] = true;
     const test_case& c = cases[it->second];
-    const output_line out = parse_output_line(output_lines[i], i + 1, c.type, signature(c.op).output_count);
-    grades.push_back(grade_case(c, conv, out.values.data(), oracle_mode::filtered, &counters));
+    const conventions& cc = case_conv[it->second];
+    const output_line out = parse_output_line(output_lines[i], i + 1, c, cc);
+    grades.push_back(grade_case(c, cc, out.values.data(), oracle_mode::filtered, &counters));
   }
   const std::size_t missing = cases.size() - grades.size();
 
   auto lookup = [&](std::uint64_t id) -> const test_case& { return cases[index.at(id)]; };
+  auto conv_of = [&](std::uint64_t id) -> const conventions& { return case_conv[index.at(id)]; };
   const grade_summary all = summarize(grades, 5);
   const bool exceeded = o.max_ulps && (all.max_ulps > *o.max_ulps || all.nonfinite > 0);
   if (o.json) {
-    nlohmann::json doc = summary_json(all, lookup, conv.depth);
+    nlohmann::json doc = summary_json(all, lookup, conv_of);
     doc["missing"] = missing;
     nlohmann::json by_class = nlohmann::json::object();
     for (input_class cls : {input_class::regular, input_class::near_degenerate, input_class::degenerate}) {
       std::vector<case_grade> part;
       for (const auto& g : grades)
         if (g.cls == cls) part.push_back(g);
-      if (!part.empty()) by_class[std::string(to_string(cls))] = summary_json(summarize(part, 1), lookup, conv.depth);
+      if (!part.empty()) by_class[std::string(to_string(cls))] = summary_json(summarize(part, 1), lookup, conv_of);
     }
     doc["by_class"] = by_class;
     if (o.max_ulps) doc["exceeded"] = exceeded;
@@ -123,7 +134,7 @@ int run_grade(const grade_options& o) {
   print_table(std::cout, rows);
   if (!all.worst.empty()) {
     std::cout << "\nWorst cases:\n";
-    for (const auto& g : all.worst) print_worst(std::cout, "case", g, lookup(g.id), conv.depth);
+    for (const auto& g : all.worst) print_worst(std::cout, "case", g, lookup(g.id), conv_of(g.id));
   }
   if (o.max_ulps)
     std::cout << '\n' << (exceeded ? "FAIL" : "PASS") << ": threshold --max-ulps " << *o.max_ulps
@@ -145,6 +156,9 @@ const command_registration reg{command{
       app.add_option("--depth", o->depth, "projections: NDC depth convention gl, d3d or reverse-z")
           ->capture_default_str();
       app.add_flag("--homogeneous", o->homogeneous, "matrices are correct up to a non-zero scale");
+      app.add_option("--convention", o->conventions,
+                     "name=value, repeatable (docs/protocol.md): handedness=left, angle=degrees, matrix3=mat4, ...; "
+                     "a case line's own \"conventions\" override the command line's for that case");
       app.add_flag("--json", o->json, "print one JSON object");
       app.add_option("--max-ulps", o->max_ulps, "exit with 1 when an output is more than this many ulps off, "
                                                 "or non-finite where the exact value is finite");

@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
                "for float implementations against the exact answer.\n"
                "Numbers: 42, 0.1 (= 1/10), -2.5e-3, 1/3, 0x1.8p-3, f32:0.1, f64:0.1."};
   app.require_subcommand(1);
+  app.set_version_flag("--version", "shadowproof " SHADOWPROOF_VERSION, "print the version and exit");
   cli::global_options globals;
   app.add_option("--max-bits", globals.limits.max_bits,
                  "largest numerator/denominator of any input number, in bits")
@@ -59,6 +60,8 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     std::cerr << "shadowproof: " << e.what() << "\n(run 'shadowproof --help' for usage)\n";

@@ -2,6 +2,7 @@
 
 #include <set>
 
+#include "shadowproof/constructions/handedness.h"
 #include "shadowproof/core/error.h"
 
 namespace shadowproof::cli {
@@ -77,6 +78,10 @@ void add_projection_options(CLI::App& app, projection_options& o, const std::vec
                      "NDC depth: gl (near -1, far 1), d3d (near 0, far 1), reverse-z (near 1, far 0)")
           ->capture_default_str();
   app.add_flag("--infinite-far", o.infinite_far, "the far plane at infinity (frustum, perspective)");
+  o.handedness_option =
+      app.add_option("--handedness", o.handedness_text,
+                     "eye space: right (looking down -z, OpenGL) or left (looking down +z: column 2 negated)")
+          ->capture_default_str();
 }
 
 depth_convention chosen_convention(const projection_options& o) {
@@ -87,6 +92,9 @@ projection build_projection(const projection_options& o, const number_limits& li
                             depth_convention convention) {
   const std::string& kind = o.kind;
   const bool games101 = kind == "games101";
+  const handedness hand = parse_handedness(o.handedness_text);
+  if (games101 && o.handedness_option && o.handedness_option->count() > 0)
+    throw error(errc::cli_unused_option, "--handedness does not apply to games101, which looks down -z");
   if (games101 && o.convention_option->count() > 0)
     throw error(errc::cli_unused_option,
                 "--convention does not apply to games101, whose NDC depth is fixed (near +1, far -1)");
@@ -140,6 +148,10 @@ projection build_projection(const projection_options& o, const number_limits& li
     p.description = "games101 ortho·translate·persp: near z = " + to_string(v("--near")) + ", far z = " +
                     to_string(v("--far")) + ", cot(fovy/2) = " + to_string(v("--cot-half-fovy")) +
                     ", aspect = " + to_string(v("--aspect")) + " (NDC depth: near +1, far -1)";
+  }
+  if (hand == handedness::left) {
+    p.matrix = with_handedness(p.matrix, hand);
+    p.description += ", left-handed (looking down +z)";
   }
   return p;
 }

@@ -18,6 +18,8 @@ struct projection_options {
   std::string convention_text = "gl";
   CLI::Option* convention_option = nullptr;
   bool infinite_far = false;
+  std::string handedness_text = "right";  // --handedness: left negates column 2
+  CLI::Option* handedness_option = nullptr;
 };
 
 /// A built projection: its exact matrix, its depth convention and a one-line description.
@@ -29,7 +31,7 @@ struct projection {
 
 /// Adds the positional kind (one of `kinds`; `default_kind` when empty means required) and the
 /// number flags --left --right --bottom --top --near --far --cot-half-fovy --aspect --cot-theta
-/// --cot-phi, --convention and --infinite-far.
+/// --cot-phi, --convention, --infinite-far and --handedness.
 void add_projection_options(CLI::App& app, projection_options& o, const std::vector<std::string>& kinds,
                             const std::string& default_kind);
 

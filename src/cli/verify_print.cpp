@@ -48,14 +48,8 @@ void print_table(std::ostream& out, const std::vector<report_row>& rows) {
   }
 }
 
-std::string reproducer_command(const test_case& c, depth_convention depth) {
-  conventions conv;
-  conv.depth = depth;
-  return shadowproof::reproducer_command(c, conv);
-}
-
 void print_worst(std::ostream& out, const std::string& title, const case_grade& g, const test_case& c,
-                 depth_convention depth) {
+                 const conventions& conv) {
   const output_grade& o = g.outputs[g.worst_output];
   out << "  " << title << " [" << to_string(g.cls) << "] case " << g.id << ", output " << g.worst_output << ": got "
       << hex_string(o.got);
@@ -75,10 +69,10 @@ void print_worst(std::ostream& out, const std::string& title, const case_grade& 
     out << ' ' << grp.name << '=' << hex_list(c, k, grp.size);
     k += grp.size;
   }
-  out << "\n    exact:  " << reproducer_command(c, depth) << '\n';
+  out << "\n    exact:  " << shadowproof::reproducer_command(c, conv) << '\n';
 }
 
-nlohmann::json worst_json(const case_grade& g, const test_case& c, depth_convention depth) {
+nlohmann::json worst_json(const case_grade& g, const test_case& c, const conventions& conv) {
   const output_grade& o = g.outputs[g.worst_output];
   nlohmann::json j{{"id", g.id},
                    {"class", std::string(to_string(g.cls))},
@@ -90,7 +84,7 @@ nlohmann::json worst_json(const case_grade& g, const test_case& c, depth_convent
                    {"nonfinite", g.nonfinite},
                    {"garbage", g.garbage},
                    {"misclassified", g.misclassified},
-                   {"reproduce", reproducer_command(c, depth)}};
+                   {"reproduce", shadowproof::reproducer_command(c, conv)}};
   j["expected"] = o.exact_defined ? nlohmann::json(hex_string(o.reference)) : nlohmann::json(nullptr);
   nlohmann::json inputs = nlohmann::json::object();
   std::size_t k = 0;
@@ -119,12 +113,14 @@ nlohmann::json conventions_json(const conventions& c) {
           {"point_light_only", c.point_light_only},
           {"unit_normal", c.unit_normal},
           {"symmetric_view", c.symmetric_view},
+          {"handedness", std::string(to_string(c.hand))},
+          {"angle", std::string(to_string(c.angle))},
           {"clamps_behind_receiver", c.clamps_behind_receiver}};
 }
 
-nlohmann::json summary_json(const grade_summary& s, const case_lookup& lookup, depth_convention depth) {
+nlohmann::json summary_json(const grade_summary& s, const case_lookup& lookup, const conventions_lookup& conv_of) {
   nlohmann::json worst = nlohmann::json::array();
-  for (const auto& g : s.worst) worst.push_back(worst_json(g, lookup(g.id), depth));
+  for (const auto& g : s.worst) worst.push_back(worst_json(g, lookup(g.id), conv_of(g.id)));
   return {{"cases", s.cases},
           {"outputs", s.outputs},
           {"max_ulps", s.max_ulps},

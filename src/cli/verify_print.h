@@ -27,6 +27,8 @@ struct report_row {
 
 /// Finds the case a grade refers to (by id).
 using case_lookup = std::function<const test_case&(std::uint64_t id)>;
+/// Finds the conventions a case is graded in (by id).
+using conventions_lookup = std::function<const conventions&(std::uint64_t id)>;
 
 /// Fixed-width table: impl, op, class, cases, max ulps, median, max bits, histogram, counts.
 void print_table(std::ostream& out, const std::vector<report_row>& rows);
@@ -35,20 +37,17 @@ void print_table(std::ostream& out, const std::vector<report_row>& rows);
 /// is furthest off (got vs correctly rounded exact), and the shadowproof command that prints
 /// the exact answer.
 void print_worst(std::ostream& out, const std::string& title, const case_grade& g, const test_case& c,
-                 depth_convention depth = depth_convention::gl);
-
-/// The shadowproof command printing the exact answer for the case's inputs.
-std::string reproducer_command(const test_case& c, depth_convention depth = depth_convention::gl);
+                 const conventions& conv = {});
 
 /// JSON of a summary: cases, max_ulps, median_ulps, max_bits, bits_histogram, nonfinite,
 /// garbage, misclassified, worst (id, class, output, got, expected, ulps, bits, inputs, ...).
 nlohmann::json summary_json(const grade_summary& s, const case_lookup& lookup,
-                            depth_convention depth = depth_convention::gl);
+                            const conventions_lookup& conv_of);
 
 /// The declared conventions of an implementation as JSON (storage, vectors, light, depth, flags).
 nlohmann::json conventions_json(const conventions& c);
 
 /// One worst case as JSON.
-nlohmann::json worst_json(const case_grade& g, const test_case& c, depth_convention depth = depth_convention::gl);
+nlohmann::json worst_json(const case_grade& g, const test_case& c, const conventions& conv = {});
 
 }  // namespace shadowproof::cli

@@ -15,6 +15,10 @@ void add_glm(std::vector<implementation>& out);
 void add_eigen(std::vector<implementation>& out);
 void add_irrlicht(std::vector<implementation>& out);
 void add_ogre(std::vector<implementation>& out);
+void add_reference_camera(std::vector<implementation>& out);
+void add_glm_camera(std::vector<implementation>& out);
+void add_qt(std::vector<implementation>& out);
+void add_osg(std::vector<implementation>& out);
 
 /// Copies n inputs into T (exact: they are representable) and n outputs back (exact widening).
 template <class T, std::size_t N>

@@ -15,8 +15,10 @@ const std::vector<implementation>& builtin_implementations() {
     impls::add_seed_reflection(v);
     impls::add_seed_projection(v);
     impls::add_seed_normal_matrix(v);
+    impls::add_reference_camera(v);
 #ifdef SHADOWPROOF_HAVE_GLM
     impls::add_glm(v);
+    impls::add_glm_camera(v);
 #endif
 #ifdef SHADOWPROOF_HAVE_EIGEN
     impls::add_eigen(v);
@@ -26,6 +28,12 @@ const std::vector<implementation>& builtin_implementations() {
 #endif
 #ifdef SHADOWPROOF_HAVE_OGRE
     impls::add_ogre(v);
+#endif
+#ifdef SHADOWPROOF_HAVE_QT
+    impls::add_qt(v);
+#endif
+#ifdef SHADOWPROOF_HAVE_OSG
+    impls::add_osg(v);
 #endif
     std::sort(v.begin(), v.end(), [](const implementation& a, const implementation& b) { return a.name < b.name; });
     return v;

@@ -266,8 +266,9 @@ bool grade_fast(const test_case& c, const conventions& conv, const double* got, 
   r.all_defined = fast.defined;
   r.cls = fast.cls;
   for (std::size_t j = 0; j < fast.count; ++j) {
-    r.value[j] = fast.value[k ? canonical_index(j, k, conv) : j];
-    r.defined[j] = fast.defined;
+    const std::size_t i = k ? canonical_index(j, k, conv) : j;
+    r.value[j] = fast.value[i];
+    r.defined[j] = fast.defined && !((fast.undefined >> i) & 1);
   }
   finish_grade<F>(out, c, conv, got, r, fast.count, oracle_mode::filtered);
   return true;

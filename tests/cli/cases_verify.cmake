@@ -44,7 +44,7 @@ shadowproof_cli_case(NAME "check rejects an unknown operation"
 # --- cases ------------------------------------------------------------------------------------
 shadowproof_cli_case(NAME "cases writes the protocol's JSON lines"
   ARGS cases --op shadow-matrix --type f32 --count 2 --seed 7 EXPECT_CODE 0
-  STDOUT_REGEX "^{\"id\": 0, \"op\": \"shadow-matrix\", \"type\": \"f32\", \"class\": \"regular\", \"plane\": \\[\"-?0x[^\"]+\", \"[^\"]+\", \"[^\"]+\", \"[^\"]+\"\\], \"light\": \\[[^]]+\\], \"exact\": {\"plane\": \\[[^]]+\\], \"light\": \\[[^]]+\\]}}\n{\"id\": 1, [^\n]*\n$")
+  STDOUT_REGEX "^{\"id\": 0, \"op\": \"shadow-matrix\", \"type\": \"f32\", \"class\": \"regular\", \"plane\": \\[\"-?0x[^\"]+\", \"[^\"]+\", \"[^\"]+\", \"[^\"]+\"\\], \"light\": \\[[^]]+\\], \"exact\": {\"plane\": \\[[^]]+\\], \"light\": \\[[^]]+\\]}, \"numbers\": {\"plane\": \\[-?[0-9][^]\"]*\\], \"light\": \\[[^]\"]+\\]}}\n{\"id\": 1, [^\n]*\n$")
 shadowproof_cli_case(NAME "cases names the point input of shadow-point"
   ARGS cases --op shadow-point --type f64 --count 1 EXPECT_CODE 0
   STDOUT_REGEX "\"point\": \\[")

@@ -27,3 +27,26 @@ endif()
 if(NOT EXISTS ${prefix}/bin/shadowproof)
   message(FATAL_ERROR "the shadowproof executable was not installed")
 endif()
+
+# The package version: 0.2 and 0.2.0 are satisfied; another minor version is not (0.x minor
+# versions may break the API: SameMinorVersion), nor is a later one. The first probe also asks
+# for the components testing and cgal (which finds CGAL).
+foreach(required "0.2 COMPONENTS testing cgal" 0.2.0 0.1 0.3 1.0)
+  string(REPLACE " " "-" probe_name "${required}")
+  set(probe ${WORK_DIR}/version-${probe_name})
+  file(WRITE ${probe}/CMakeLists.txt
+    "cmake_minimum_required(VERSION 3.25)\nproject(version_probe LANGUAGES CXX)\n"
+    "find_package(shadowproof ${required} CONFIG QUIET)\n"
+    "message(STATUS \"found=\${shadowproof_FOUND} version=\${shadowproof_VERSION}\")\n")
+  execute_process(COMMAND ${CMAKE_COMMAND} -S ${probe} -B ${probe}/build -DCMAKE_PREFIX_PATH=${prefix}
+    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(required MATCHES "^0\\.2")
+    set(expected "found=1 version=0.2.0")
+  else()
+    set(expected "found=0")
+  endif()
+  string(FIND "${out}" "${expected}" at)
+  if(rc OR at EQUAL -1)
+    message(FATAL_ERROR "find_package(shadowproof ${required}) should give '${expected}':\n${out}\n${err}")
+  endif()
+endforeach()

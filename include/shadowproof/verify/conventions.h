@@ -2,6 +2,8 @@
 /// Conventions an implementation declares: storage, vector side, light sign, depth range, and
 /// the input restrictions it needs. The grader maps each to the canonical form exactly, so a
 /// convention is never reported as an error and never hides one.
+#include "shadowproof/constructions/handedness.h"
+#include "shadowproof/constructions/irrational.h"
 #include "shadowproof/constructions/project.h"
 
 namespace shadowproof {
@@ -13,6 +15,19 @@ enum class vector_side { column, row };
 /// Sign of a directional light's (x, y, z): the library's canonical form points towards the
 /// light; `along_rays` means the vector is the direction the light travels (the negation).
 enum class light_sign { towards_light, along_rays };
+
+/// How a plane's fourth number is meant: (a, b, c, d) is a x + b y + c z + d = 0 (`plus_d`, the
+/// canonical form) or a x + b y + c z = d (`equals_d`, e.g. three.js ShadowMesh's reading).
+/// A protocol convention: case files write planes in the declared form and the reader maps
+/// them back exactly (d ↦ −d), so a test_case always holds the canonical form.
+enum class plane_form { plus_d, equals_d };
+/// How a 3x3 matrix (the normal matrix's input and output) is laid out: 9 numbers (`packed`),
+/// 12 (`padded`: three groups of 4, each row or column followed by one unused number, as
+/// WGSL's mat3x3<f32> and wgpu-matrix's mat3 store it), or 16 (`mat4`: embedded as
+/// [A 0; 0 1], as libraries that only have 4x4 matrices use it). A protocol convention: the
+/// reader maps the line to the 9 canonical numbers; padding is ignored, and the embedding's
+/// own entries must be exactly 0 and 1.
+enum class matrix3_layout { packed, padded, mat4 };
 
 /// Declared conventions of an implementation (defaults are the library's canonical forms).
 struct conventions {
@@ -39,6 +54,18 @@ struct conventions {
   /// ortho / frustum: only symmetric volumes (l = −r, b = −t), for builders taking a width
   /// and a height; cases are generated accordingly.
   bool symmetric_view = false;
+  /// Projections and look-at cameras: eye space looking down −z (right) or +z (left);
+  /// left-handed projections are M · diag(1, 1, −1, 1) (constructions/handedness.h).
+  handedness hand = handedness::right;
+  /// perspective-fov: unit of the field-of-view angle.
+  angle_unit angle = angle_unit::radians;
+  /// Protocol only (case files): how planes are written, see plane_form.
+  plane_form plane = plane_form::plus_d;
+  /// Protocol only (case files): how 3x3 matrix outputs are laid out, see matrix3_layout.
+  matrix3_layout matrix3 = matrix3_layout::packed;
+  /// Protocol only (case files): how 3x3 matrix inputs are laid out (a library may take a
+  /// mat4 and return a mat3, as gl-matrix's normalFromMat4 and three.js's getNormalMatrix do).
+  matrix3_layout matrix3_input = matrix3_layout::packed;
 };
 
 }  // namespace shadowproof

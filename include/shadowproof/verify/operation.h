@@ -16,7 +16,11 @@ namespace shadowproof {
 ///   reflection-matrix  plane[4] -> mirror matrix about P, 16 entries;
 ///   ortho, frustum     box[6] = l, r, b, t, n, f -> orthographic / frustum(…, depth), 16 entries;
 ///   normal-matrix      matrix[9] (3x3, row by row) -> (A⁻¹)ᵀ, 9 entries;
-///   perspective        camera[4] = cot(fovy/2), aspect, n, f -> perspective(…, depth), 16 entries.
+///   perspective        camera[4] = cot(fovy/2), aspect, n, f -> perspective(…, depth), 16 entries;
+///   perspective-fov    camera[4] = fovy, aspect, n, f -> the same from the angle (irrational);
+///   perspective-fov-infinite  camera[3] = fovy, aspect, n -> far plane at infinity;
+///   look-at, target-to eye[3], target[3], up[3] -> view matrix / its inverse (irrational);
+///   ortho-size, perspective-size  size[4] = width, height, n, f -> symmetric volumes.
 /// summary(op) says the same for each one.
 enum class operation {
 #define SHADOWPROOF_OPERATION(code) code,

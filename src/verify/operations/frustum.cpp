@@ -34,6 +34,8 @@ operation_spec make() {
   s.exact_rational = exact<rational>;
   s.exact_ival32 = exact<ival32>;
   s.exact_ival64 = exact<ival64>;
+  s.fast_f32 = fast_frustum_f32;
+  s.fast_f64 = fast_frustum_f64;
   s.reproducer = reproducer;
   s.invalid = never_invalid;
   return s;

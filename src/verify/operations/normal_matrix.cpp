@@ -64,6 +64,8 @@ operation_spec make() {
   s.exact_rational = exact<rational>;
   s.exact_ival32 = exact<ival32>;
   s.exact_ival64 = exact<ival64>;
+  s.fast_f32 = fast_normal_matrix_f32;
+  s.fast_f64 = fast_normal_matrix_f64;
   s.reproducer = reproducer;
   s.invalid = never_invalid;
   return s;

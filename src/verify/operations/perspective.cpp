@@ -27,7 +27,7 @@ exact_outputs<N> exact(const double* in, const conventions& conv) {
     r.entry_undefined[2 * 4 + 2] = r.entry_undefined[2 * 4 + 3] = true;
     f = n + N(1);
   }
-  r.set_matrix(perspective(c, aspect, n, f, conv.depth, false));
+  r.set_matrix(with_handedness(perspective(c, aspect, n, f, conv.depth, false), conv.hand));
   return r;
 }
 
@@ -65,7 +65,7 @@ double closeness(const double* x) {
 std::string reproducer(const test_case& c, const conventions& conv) {
   return "shadowproof project perspective --cot-half-fovy " + hex_string(c.inputs[0]) + " --aspect " +
          hex_string(c.inputs[1]) + " --near " + hex_string(c.inputs[2]) + " --far " + hex_string(c.inputs[3]) +
-         " --convention " + std::string(to_string(conv.depth));
+         " --convention " + std::string(to_string(conv.depth)) + handedness_flag(conv);
 }
 
 operation_spec make() {
@@ -79,6 +79,8 @@ operation_spec make() {
   s.exact_rational = exact<rational>;
   s.exact_ival32 = exact<ival32>;
   s.exact_ival64 = exact<ival64>;
+  s.fast_f32 = fast_perspective_f32;
+  s.fast_f64 = fast_perspective_f64;
   s.reproducer = reproducer;
   s.invalid = never_invalid;
   return s;

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "../operation_table.h"
+#include "shadowproof/constructions/handedness.h"
 #include "shadowproof/constructions/project.h"
 #include "shadowproof/core/ulp.h"
 
@@ -16,7 +17,8 @@ namespace shadowproof::detail {
 /// 2 for the x and y rows of a frustum). Those are marked undefined; the other entries still
 /// exist and are computed with that extent made non-zero (they do not depend on it). A builder
 /// declared symmetric (l = −r, b = −t) has a zero centre offset by construction, so for it a
-/// flat x or y extent leaves that offset defined as 0.
+/// flat x or y extent leaves that offset defined as 0. A left-handed convention negates
+/// column 2 (handedness.h).
 template <class N, class Build, class OffsetColumn>
 exact_outputs<N> view_volume_matrix(const std::array<N, 6>& x, const conventions& conv, Build build,
                                     OffsetColumn offset_column) {
@@ -32,7 +34,7 @@ exact_outputs<N> view_volume_matrix(const std::array<N, 6>& x, const conventions
       if (conv.symmetric_view && k < 2) zero_offsets.push_back(k * 4 + offset);
       else r.entry_undefined[k * 4 + offset] = true;
     }
-  r.set_matrix(build(v));
+  r.set_matrix(with_handedness(build(v), conv.hand));
   for (std::size_t i = 0; i < zero_offsets.n; ++i) r.values[zero_offsets[i]] = N(0);
   return r;
 }
@@ -45,12 +47,17 @@ std::array<N, 6> box_from(const double* in) {
   return x;
 }
 
+/// " --handedness left" for a left-handed convention, nothing for the default.
+inline std::string handedness_flag(const conventions& conv) {
+  return conv.hand == handedness::left ? " --handedness left" : "";
+}
+
 /// "shadowproof project <kind> --left … --far … --convention <depth>".
 inline std::string box_reproducer(const char* kind, const test_case& c, const conventions& conv) {
   static const char* const flags[] = {"--left", "--right", "--bottom", "--top", "--near", "--far"};
   std::string s = std::string("shadowproof project ") + kind;
   for (std::size_t i = 0; i < 6; ++i) s += std::string(" ") + flags[i] + " " + hex_string(c.inputs[i]);
-  return s + " --convention " + std::string(to_string(conv.depth));
+  return s + " --convention " + std::string(to_string(conv.depth)) + handedness_flag(conv);
 }
 
 }  // namespace shadowproof::detail

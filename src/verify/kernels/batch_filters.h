@@ -1,0 +1,122 @@
+#pragma once
+// The batch filters of every operation, written once over the real type R (double for the
+// generic variant, four doubles for AVX2): a block of cases is copied into local columns (no
+// aliasing between inputs and outputs), filtered lane by lane, and copied out.
+#include <cstddef>
+#include <cstdint>
+
+#include "batch.h"
+#include "frustum.h"
+#include "normal_matrix.h"
+#include "ortho.h"
+#include "perspective.h"
+#include "reflection_matrix.h"
+#include "shadow_matrix.h"
+#include "shadow_point.h"
+
+namespace shadowproof::detail {
+inline namespace SHADOWPROOF_KERNEL_TARGET {
+
+/// How a lane type loads and stores: R::width cases at a time from contiguous columns.
+/// batch_avx2.cpp specialises it for its vector; double is one case (the generic filter then
+/// works on blocks of local columns instead, see filter_block).
+template <class R>
+struct lanes_of {
+  static constexpr std::size_t width = 1;
+};
+
+// One fraction form over the cases of one vector, from the columns: `values` gets the outputs.
+template <class Form, class F>
+struct fraction_op {
+  static constexpr int inputs = Form::inputs, outputs = Form::entries;
+  template <class R>
+  static auto run(R* x, const conventions& conv, R* values, R&) {
+    return filter_lanes<Form, F, R>(x, conv, values);
+  }
+};
+template <class F>
+struct shadow_point_op {
+  static constexpr int inputs = 11, outputs = 3;
+  template <class R>
+  static auto run(R* x, const conventions& conv, R* values, R& cls) {
+    return shadow_point_lanes<F, R>(x, conv, values, cls);
+  }
+};
+
+/// Cases [first, first + n), n ≤ block, on doubles: copied into local columns (which alias
+/// nothing), filtered by a loop whose body has no branch on the values (the compiler
+/// vectorises it: flatten inlines the whole formula into it), copied out.
+template <class Op>
+[[gnu::flatten]] void filter_block(const double* const* in, std::size_t first, std::size_t n, const conventions& conv,
+                  const batch_filter_out& out) {
+  constexpr std::size_t block = 16;
+  double xs[Op::inputs][block], vs[Op::outputs][block], classes[block];
+  bool decided[block];
+  for (int k = 0; k < Op::inputs; ++k)
+    for (std::size_t b = 0; b < block; ++b) xs[k][b] = in[k][first + (b < n ? b : 0)];
+  for (std::size_t b = 0; b < block; ++b) {
+    double x[Op::inputs], v[Op::outputs], cls = 0;
+    SHADOWPROOF_UNROLL
+    for (int k = 0; k < Op::inputs; ++k) x[k] = xs[k][b];
+    decided[b] = Op::run(x, conv, v, cls);
+    classes[b] = cls;
+    SHADOWPROOF_UNROLL
+    for (int j = 0; j < Op::outputs; ++j) vs[j][b] = v[j];
+  }
+  for (int j = 0; j < Op::outputs; ++j)
+    for (std::size_t b = 0; b < n; ++b) out.values[j][first + b] = vs[j][b];
+  for (std::size_t b = 0; b < n; ++b) {
+    out.decided[first + b] = decided[b] ? 1 : 0;
+    if (out.point_class) out.point_class[first + b] = static_cast<std::int8_t>(classes[b]);
+  }
+}
+
+/// The filter of one operation over all cases, R lanes at a time; a tail shorter than a
+/// vector is left undecided (the kernel for one case takes it).
+template <class Op, class R>
+void filter_all(const double* const* in, std::size_t count, const conventions& conv, const batch_filter_out& out) {
+  using L = lanes_of<R>;
+  if constexpr (L::width == 1) {
+    for (std::size_t first = 0; first < count; first += 16)
+      filter_block<Op>(in, first, count - first < 16 ? count - first : 16, conv, out);
+  } else {
+    std::size_t i = 0;
+    for (; i + L::width <= count; i += L::width) {
+      R x[Op::inputs], v[Op::outputs], cls = R(0.0);
+      for (int k = 0; k < Op::inputs; ++k) x[k] = L::load(in[k] + i);
+      const auto ok = Op::run(x, conv, v, cls);
+      for (int j = 0; j < Op::outputs; ++j) L::store(out.values[j] + i, v[j]);
+      L::store_mask(out.decided + i, ok);
+      if (out.point_class) L::store_classes(out.point_class + i, cls);
+    }
+    for (; i < count; ++i) out.decided[i] = 0;
+  }
+}
+
+/// The filter of (op, type) over lanes R.
+template <class R>
+batch_filter batch_filter_over(operation op, scalar_type type) {
+  const bool f32 = type == scalar_type::f32;
+  switch (op) {
+    case operation::shadow_matrix:
+      return f32 ? filter_all<fraction_op<shadow_matrix_form, float>, R> : filter_all<fraction_op<shadow_matrix_form, double>, R>;
+    case operation::shadow_point:
+      return f32 ? filter_all<shadow_point_op<float>, R> : filter_all<shadow_point_op<double>, R>;
+    case operation::reflection_matrix:
+      return f32 ? filter_all<fraction_op<reflection_matrix_form, float>, R>
+                 : filter_all<fraction_op<reflection_matrix_form, double>, R>;
+    case operation::ortho:
+      return f32 ? filter_all<fraction_op<ortho_form, float>, R> : filter_all<fraction_op<ortho_form, double>, R>;
+    case operation::frustum:
+      return f32 ? filter_all<fraction_op<frustum_form, float>, R> : filter_all<fraction_op<frustum_form, double>, R>;
+    case operation::normal_matrix:
+      return f32 ? filter_all<fraction_op<normal_matrix_form, float>, R>
+                 : filter_all<fraction_op<normal_matrix_form, double>, R>;
+    case operation::perspective:
+      return f32 ? filter_all<fraction_op<perspective_form, float>, R> : filter_all<fraction_op<perspective_form, double>, R>;
+  }
+  return nullptr;
+}
+
+}  // namespace SHADOWPROOF_KERNEL_TARGET
+}  // namespace shadowproof::detail

@@ -1,0 +1,156 @@
+// perspective-fov: camera[4] = fovy, aspect, n, f -> perspective(cot(fovy/2), aspect, n, f,
+// depth), 16 entries, and perspective-fov-infinite: camera[3] = fovy, aspect, n -> the same
+// with the far plane at infinity. fovy is an angle in the declared unit (radians by default,
+// or degrees); the focal scale cot(fovy/2) of a float angle is transcendental (rational only
+// at 90°), so entries (0,0) = cot(fovy/2)/aspect and (1,1) = cot(fovy/2) are rounded correctly
+// by Ziv's strategy (constructions/irrational.h); the depth rows are rational. Left-handed:
+// column 2 negated.
+// Classes: near-degenerate = far within a relative 2^-k of near, far ≫ near, or a field of
+// view within 2^-k of 0 or of 180°; degenerate = n = f (the depth entries undefined).
+// fovy outside (0, π), aspect ≤ 0, n ≤ 0 or f ≤ 0 admit no projection: every output undefined.
+#include <cmath>
+#include <limits>
+
+#include "irrational_entries.h"
+#include "view_volume.h"
+
+namespace shadowproof::detail {
+namespace {
+
+template <bool infinite>
+exact_outputs<rational> exact_rational(const double* in, const conventions& conv) {
+  exact_outputs<rational> r;
+  const double fovy = in[0];
+  const rational aspect = exact_value(in[1]), n = exact_value(in[2]);
+  rational f = infinite ? rational(0) : exact_value(in[3]);
+  if (!field_of_view_in_range(fovy, conv.angle) || sgn(aspect) <= 0 || sgn(n) <= 0 || (!infinite && sgn(f) <= 0)) {
+    r.set_undefined(16);
+    return r;
+  }
+  r.entry_undefined.assign(16, false);
+  if (!infinite && f == n) {  // zero depth extent: only the depth row divides by f − n
+    r.entry_undefined[2 * 4 + 2] = r.entry_undefined[2 * 4 + 3] = true;
+    f = n + 1;
+  }
+  // The depth rows exactly, with a unit focal scale in the x and y rows replaced below.
+  mat4<rational> M = perspective(rational(1), rational(1), n, f, conv.depth, infinite);
+  M(1, 1) = correctly_rounding_representative([&](long p) { return cot_half_angle(fovy, conv.angle, p); },
+                                              "cot(fovy/2)");
+  M(0, 0) = correctly_rounding_representative(
+      [&](long p) {
+        const enclosure c = cot_half_angle(fovy, conv.angle, p);
+        return enclosure{c.lo / aspect, c.hi / aspect};  // aspect > 0 keeps the order
+      },
+      "cot(fovy/2)/aspect");
+  r.set_matrix(with_handedness(M, conv.hand));
+  return r;
+}
+
+template <class N, bool infinite>
+exact_outputs<N> exact(const double* in, const conventions& conv) {
+  return irrational_outputs<N>(conv, infinite ? "perspective-fov-infinite" : "perspective-fov",
+                               [&] { return exact_rational<infinite>(in, conv); });
+}
+
+double positive(case_rng& r, int emin, int emax) {
+  double v = 0;
+  while (v == 0) v = std::fabs(r.value(emin, emax));
+  return v;
+}
+
+// A field of view inside (0, π) radians or (0°, 180°): mostly 10°–150°, near-degenerate ones
+// within a relative 2^-k of either end.
+double field_of_view(case_rng& r, input_class cls, angle_unit unit) {
+  const double full = unit == angle_unit::degrees ? 180.0 : 3.140625;  // 3.140625 < π, a float
+  double x = full * (0.05 + 0.8 * std::ldexp(static_cast<double>(r.integer(0, (1 << 20) - 1)), -20));
+  if (cls == input_class::near_degenerate && (r.raw() & 1)) {
+    const double tiny = std::ldexp(full, -static_cast<int>(r.integer(4, r.bits() - 2)));
+    x = (r.raw() & 1) ? tiny : full - tiny;
+  }
+  return r.fit(x);
+}
+
+template <bool infinite>
+void generate(case_rng& r, input_class cls, const conventions& req, double* x) {
+  x[0] = field_of_view(r, cls, req.angle);
+  x[1] = r.fit(positive(r, -1, 2));  // aspect
+  x[2] = r.fit(positive(r, -4, 0));  // near
+  if (infinite) return;
+  x[3] = r.fit(x[2] + positive(r, 0, 6));
+  if (cls == input_class::near_degenerate && (r.raw() & 1)) {
+    if (r.raw() & 1) {
+      x[3] = x[2] * std::ldexp(1.0, static_cast<int>(r.integer(10, r.bits() == 24 ? 60 : 400)));  // far ≫ near
+    } else {
+      const int k = static_cast<int>(r.integer(4, r.bits() - 1));
+      x[3] = r.fit(x[2] + std::ldexp(x[2], -k));  // far a relative 2^-k beyond near
+    }
+  } else if (cls == input_class::degenerate) {
+    x[3] = x[2];
+  }
+}
+
+// The smaller of log2 of the relative depth extent and log2 of the angle's relative distance
+// to 0 or to a half turn.
+template <bool infinite>
+double closeness(const double* x) {
+  // The unit is not known here; a fovy above π is in degrees.
+  const long double full = x[0] > 3.2 ? 180.0L : 3.14159265358979323846L;
+  const long double a = std::fabs(static_cast<long double>(x[0]));
+  double c = static_cast<double>(std::log2(std::min(a, std::fabs(full - a)) / full));
+  if (!infinite) {
+    const long double extent = std::fabs(static_cast<long double>(x[3]) - x[2]);
+    if (extent == 0) return -std::numeric_limits<double>::infinity();
+    c = std::min(c, static_cast<double>(std::log2(extent / (std::fabs(static_cast<long double>(x[2])) +
+                                                             std::fabs(static_cast<long double>(x[3]))))));
+  }
+  return c;
+}
+
+template <bool infinite>
+std::string reproducer(const test_case& c, const conventions& conv) {
+  std::string s = "shadowproof camera perspective --fovy " + hex_string(c.inputs[0]) +
+                  (conv.angle == angle_unit::degrees ? " --degrees" : "") + " --aspect " + hex_string(c.inputs[1]) +
+                  " --near " + hex_string(c.inputs[2]);
+  s += infinite ? std::string(" --infinite-far") : " --far " + hex_string(c.inputs[3]);
+  return s + " --convention " + std::string(to_string(conv.depth)) + handedness_flag(conv);
+}
+
+template <bool infinite>
+operation_spec make() {
+  operation_spec s{};
+  if constexpr (infinite) {
+    s.op = operation::perspective_fov_infinite;
+    s.name = "perspective-fov-infinite";
+    s.summary = "camera[3] = fovy, aspect, n -> perspective with the far plane at infinity, 16 entries "
+                "(cot(fovy/2) rounded correctly)";
+    s.signature = make_signature({{"camera", 3}}, 16, 4);
+  } else {
+    s.op = operation::perspective_fov;
+    s.name = "perspective-fov";
+    s.summary = "camera[4] = fovy, aspect, n, f -> symmetric perspective in the declared depth convention, 16 "
+                "entries (cot(fovy/2) rounded correctly)";
+    s.signature = make_signature({{"camera", 4}}, 16, 4);
+  }
+  s.generate = generate<infinite>;
+  s.closeness = closeness<infinite>;
+  s.exact_rational = exact<rational, infinite>;
+  s.exact_ival32 = exact<ival32, infinite>;
+  s.exact_ival64 = exact<ival64, infinite>;
+  s.reproducer = reproducer<infinite>;
+  s.invalid = never_invalid;
+  return s;
+}
+
+}  // namespace
+
+const operation_spec& perspective_fov_spec() {
+  static const operation_spec s = make<false>();
+  return s;
+}
+
+const operation_spec& perspective_fov_infinite_spec() {
+  static const operation_spec s = make<true>();
+  return s;
+}
+
+}  // namespace shadowproof::detail
