@@ -10,7 +10,8 @@
 //   files in DIR, default $SHADOWPROOF_BENCH_DATA; scripts/bench-data.sh installs them), over a
 //   ground plane below each model;
 // - a soup of 10k separate triangles (no shared edge: nothing cancels, the worst case);
-// - one convex and one star-shaped 4096-gon crossing the receiver plane (the face cap).
+// - one convex and one star-shaped 4096-gon crossing the receiver plane (the face cap), and
+//   convex 1024- and 2048-gons to show the growth with n.
 // Exact: compute_shadow_region (the silhouette builder) on the light-facing triangles, and on
 // the whole mesh; Clipper (Debian libpolyclipping 6.4): the light-facing triangles projected
 // in double, snapped to 64-bit integers, united with the non-zero rule and intersected with the
@@ -123,11 +124,10 @@ dmesh soup(std::size_t n) {
   return m;
 }
 
-// One 4096-gon in the plane z = 1 + x/4 (crossing the receiver z = 0 at x = −4): convex (on a
+// One n-gon in the plane z = 1 + x/4 (crossing the receiver z = 0 at x = −4): convex (on a
 // parabola) or a star (alternating radii, not convex).
-dmesh big_face(bool convex) {
+dmesh big_face(bool convex, int n) {
   dmesh m;
-  const int n = 4096;
   m.f.emplace_back();
   for (int i = 0; i < n; ++i) {
     double x, y;
@@ -404,8 +404,10 @@ int main(int argc, char** argv) {
     cases.push_back({"torus 1M", [] { return torus(1000, 500); }});
   }
   cases.push_back({"soup 10k", [] { return soup(10000); }});
-  cases.push_back({"convex 4096-gon", [] { return big_face(true); }});
-  cases.push_back({"star 4096-gon", [] { return big_face(false); }});
+  cases.push_back({"convex 1024-gon", [] { return big_face(true, 1024); }});
+  cases.push_back({"convex 2048-gon", [] { return big_face(true, 2048); }});
+  cases.push_back({"convex 4096-gon", [] { return big_face(true, 4096); }});
+  cases.push_back({"star 4096-gon", [] { return big_face(false, 4096); }});
   struct model {
     const char* name;
     const char* file;

@@ -140,13 +140,13 @@ clip_setup make_clip_setup(const scene& sc, const plane<rational>& P, case_set& 
     polygon_set receiver(c.receiver_outer);
     for (std::size_t h = 0; h < sc.receiver.holes.size(); ++h) {
       const std::string name = "/receiver/holes/" + std::to_string(h);
-      auto ring = chart_ring(sc.receiver.holes[h], name, P, k);
-      polygon_set outside(ring);
+      auto hole = chart_ring(sc.receiver.holes[h], name, P, k);
+      polygon_set outside(hole);
       outside.subtract(polygon_set(c.receiver_outer));
       if (!outside.empty()) throw error(errc::scene_hole_outside_receiver, name + " is not inside /receiver/polygon");
-      receiver.subtract(polygon_set(ring));
-      std::reverse(ring.begin(), ring.end());
-      c.receiver_holes.push_back(std::move(ring));
+      receiver.subtract(polygon_set(hole));
+      std::reverse(hole.begin(), hole.end());
+      c.receiver_holes.push_back(std::move(hole));
     }
     if (receiver.empty()) throw error(errc::scene_empty_polygon, "the holes cover the whole receiver");
   }
