@@ -15,6 +15,7 @@
 #include "shadowproof/verify/cases.h"
 #include "shadowproof/verify/protocol.h"
 #include "shadowproof/core/io.h"
+#include "shadowproof/core/number.h"
 #include "shadowproof/core/ulp.h"
 
 namespace shadowproof::cli {
@@ -59,7 +60,32 @@ nlohmann::json report_json(const fuzz_report& r) {
   return doc;
 }
 
-void print_text(std::ostream& out, const fuzz_report& r) {
+// One input number as a reader takes it in at a glance: a short decimal when it is exactly the
+// number (3, -0.5, 6.0000005), otherwise the bit-exact hex float (0x1p-149).
+std::string readable_number(double x) {
+  std::ostringstream decimal;
+  decimal.precision(17);
+  decimal << x;
+  const std::string text = decimal.str();
+  if (text.size() <= 12 && text.find('e') == std::string::npos && parse_number(text) == exact_value(x)) return text;
+  return hex_string(x);
+}
+
+// "plane (0, 4, 0x1p-22, 8)  light (0, -2, -1, 1)  point (0, 0, 0)": the groups of the case's
+// signature with their values.
+std::string readable_inputs(const test_case& c) {
+  std::string out;
+  std::size_t k = 0;
+  for (const input_group& g : signature(c.op).inputs) {
+    if (!out.empty()) out += "  ";
+    out += g.name + " (";
+    for (std::size_t i = 0; i < g.size; ++i) out += (i ? ", " : "") + readable_number(c.inputs[k++]);
+    out += ")";
+  }
+  return out;
+}
+
+void print_text(std::ostream& out, const fuzz_report& r, const implementation& impl) {
   out << "fuzz " << r.impl << ": " << r.cases << " cases";
   for (const auto& [kind, n] : r.failing_cases) out << ", " << n << " " << kind;
   out << "\n";
@@ -71,11 +97,17 @@ void print_text(std::ostream& out, const fuzz_report& r) {
     if (f.kind == failure_kind::misclassified && f.original_grade.exact_class && f.original_grade.got_class)
       what = " (exact " + std::string(to_string(*f.original_grade.exact_class)) + ", float image " +
              std::string(to_string(*f.original_grade.got_class)) + ")";
-    out << "\n" << to_string(f.kind) << what << " on " << f.family
-        << ", " << f.bits << " bits of error; shrunk from " << f.bits_before << " to " << f.bits_after << " bits\n";
-    out << "  original: " << case_json_line(f.original) << "\n";
-    out << "  shrunk:   " << case_json_line(f.shrunk) << "\n";
+    std::ostringstream bits;
+    bits.precision(3);
+    bits << f.bits;
+    out << "\n" << to_string(f.kind) << what << " on " << f.family << ", " << bits.str()
+        << " bits of error; shrunk from " << f.bits_before << " to " << f.bits_after << " bits\n";
+    out << "  original: " << readable_inputs(f.original) << "\n";
+    out << "  shrunk:   " << readable_inputs(f.shrunk) << "\n";
+    out << "  exact:    " << reproducer_command(f.shrunk, impl.conv) << "\n";
   }
+  if (!r.failures.empty())
+    out << "\nEach shrunk case, as a case line and a Catch2 test: --out DIR (docs/tutorial-fuzz.md).\n";
 }
 
 int run_fuzz_command(const fuzz_options& o) {
@@ -110,7 +142,7 @@ int run_fuzz_command(const fuzz_options& o) {
     write_file_atomically(dir / "report.json", report_json(r).dump(2) + "\n");
   }
   if (o.json) std::cout << report_json(r).dump(2) << "\n";
-  else print_text(std::cout, r);
+  else print_text(std::cout, r, impl);
   return r.failures.empty() ? 0 : 1;
 }
 

@@ -42,3 +42,18 @@ if(shadowproof_snippets)
     target_link_libraries(shadowproof_doc_snippets PRIVATE Catch2::Catch2)
   endif()
 endif()
+
+# Links: every relative link of the pages names an existing file, and an existing heading when it
+# has an #anchor. The checker itself must report a page with broken links.
+add_executable(shadowproof_page_links ${CMAKE_CURRENT_LIST_DIR}/page_links.cpp)
+shadowproof_warnings(shadowproof_page_links)
+file(GLOB shadowproof_linked_pages CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/docs/*.md ${PROJECT_SOURCE_DIR}/docs/upstream/*.md
+     ${PROJECT_SOURCE_DIR}/src/*/README.md ${PROJECT_SOURCE_DIR}/include/shadowproof/README.md)
+add_test(NAME "docs: every link of the pages points to an existing page and heading"
+  COMMAND shadowproof_page_links ${PROJECT_SOURCE_DIR}/README.md ${PROJECT_SOURCE_DIR}/CONTRIBUTING.md
+          ${PROJECT_SOURCE_DIR}/conformance/README.md ${shadowproof_linked_pages})
+add_test(NAME "docs: the link checker reports a missing page and a missing heading"
+  COMMAND shadowproof_page_links ${CMAKE_CURRENT_LIST_DIR}/data/broken_links.md)
+set_tests_properties("docs: every link of the pages points to an existing page and heading" PROPERTIES LABELS docs)
+set_tests_properties("docs: the link checker reports a missing page and a missing heading" PROPERTIES LABELS docs
+  PASS_REGULAR_EXPRESSION "broken_links.md:4: no such file: no-such-page.md\n.*broken_links.md:4: no such heading: #no-such-heading\n2 broken link\\(s\\)")

@@ -87,6 +87,14 @@ void generate(case_rng& r, input_class cls, const conventions&, double* x) {
     }
   }
   for (int i = 0; i < 9; ++i) x[i] = r.fit(x[i]);
+  if (cls == input_class::range) {
+    // Every input scaled by one power of two (the frame does not change, the translation scales)
+    // so that |eye − target|² overflows, or underflows.
+    const int top = top_exponent(x, 9);
+    const int e = (r.raw() & 1) ? max_exponent(r) / 2 - top + static_cast<int>(r.integer(1, 3))
+                                : min_normal_exponent(r) / 2 - top - 3 - static_cast<int>(r.integer(0, 2));
+    if (!scale_exactly(r, x, 9, e)) generate(r, cls, conventions{}, x);  // draw again
+  }
 }
 
 // log2 of the sine of the angle between up and the view direction (−inf when parallel or
@@ -107,6 +115,7 @@ double closeness(const double* x) {
 
 template <bool placement>
 std::string reproducer(const test_case& c, const conventions& conv) {
+  if (std::isinf(closeness(c.inputs.data()))) return exact_command(c, conv);  // no frame: `camera` rejects it
   return std::string("shadowproof camera ") + (placement ? "target-to" : "look-at") + " --eye " + hex_list(c, 0, 3) +
          " --target " + hex_list(c, 3, 3) + " --up " + hex_list(c, 6, 3) + handedness_flag(conv);
 }
@@ -131,6 +140,13 @@ operation_spec make() {
   s.exact_rational = exact<rational, placement>;
   s.exact_ival32 = exact<ival32, placement>;
   s.exact_ival64 = exact<ival64, placement>;
+  // No derivatives over dual numbers (square roots): the verdicts take the generic
+  // sensitivities (conditioning.cpp). Longest path of the straightforward evaluation: the
+  // difference eye − target, |w|² (three), the square root and the division, the cross product
+  // with up (two) and its normalisation (five), the second cross product (two), the translation's
+  // dot product (three): sixteen roundings, c = 2 × 16.
+  s.stable_constant = 32;
+  s.sentinel_outputs = matrix_sentinels;
   s.reproducer = reproducer<placement>;
   s.invalid = never_invalid;
   return s;
