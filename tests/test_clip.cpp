@@ -4,12 +4,18 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <random>
 #include <sstream>
+
+#include "shadowproof/clip/generate_scene.h"
 
 #include "shadowproof/clip/shadow_region.h"
 #include "shadowproof/constructions/reflect.h"
 #include "shadowproof/clip/svg.h"
+#include "shadowproof/core/error.h"
 
 using namespace shadowproof;
 
@@ -641,4 +647,269 @@ TEST_CASE("caster lying on the receiver under an oblique light shades its own fo
   const auto r = compute_shadow_region(make_scene(dir(1, 0, 1), {polygon_caster({p3(1, 1, 0), p3(5, 1, 0), p3(1, 4, 0)})}));
   CHECK(r.chart_area == 6);
   CHECK(r.has(shadow_case::caster_in_receiver_plane));
+}
+
+// --- the silhouette builder against the union-of-pieces reference ---------------------------
+
+namespace {
+
+struct mt_source {
+  std::mt19937_64 rng;
+  std::uint64_t below(std::uint64_t n) { return n <= 1 ? 0 : std::uniform_int_distribution<std::uint64_t>(0, n - 1)(rng); }
+};
+
+// The scene as JSON, for reproducing a failure with `shadowproof clip`.
+std::string scene_json(const scene& s) {
+  std::ostringstream o;
+  const auto point = [&](const point3& p) { o << "[\"" << to_string(p[0]) << "\",\"" << to_string(p[1]) << "\",\"" << to_string(p[2]) << "\"]"; };
+  const auto ring = [&](const std::vector<point3>& r) {
+    o << "[";
+    for (std::size_t i = 0; i < r.size(); ++i) {
+      if (i) o << ",";
+      point(r[i]);
+    }
+    o << "]";
+  };
+  o << "{\"receiver\": {\"polygon\": ";
+  ring(s.receiver.outer.vertices);
+  o << ", \"holes\": [";
+  for (std::size_t h = 0; h < s.receiver.holes.size(); ++h) {
+    if (h) o << ",";
+    ring(s.receiver.holes[h].vertices);
+  }
+  o << "]}, \"light\": [";
+  for (int k = 0; k < 4; ++k) o << (k ? "," : "") << "\"" << to_string(s.light_source.l[static_cast<std::size_t>(k)]) << "\"";
+  o << "], \"casters\": [";
+  for (std::size_t c = 0; c < s.casters.size(); ++c) {
+    if (c) o << ",";
+    o << "{\"mesh\": {\"vertices\": ";
+    ring(s.casters[c].vertices);
+    o << ", \"faces\": [";
+    for (std::size_t f = 0; f < s.casters[c].faces.size(); ++f) {
+      o << (f ? "," : "") << "[";
+      for (std::size_t k = 0; k < s.casters[c].faces[f].size(); ++k) o << (k ? "," : "") << s.casters[c].faces[f][k];
+      o << "]";
+    }
+    o << "]}}";
+  }
+  o << "]}";
+  return o.str();
+}
+
+// Both builders on one scene: either the same region in every field (polygons in 2D and 3D,
+// areas, zero-area pieces, cases, the picture's projected outlines) or the same error.
+// Returns 1 when a region was compared, 0 when both rejected the scene.
+int compare_builders(const scene& s, const std::string& what) {
+  INFO(what);
+  INFO(scene_json(s));
+  if (const char* dump = std::getenv("CLIP_DUMP")) { std::ofstream(dump) << scene_json(s); }
+  clip_options reference_options, silhouette_options;
+  reference_options.method = clip_method::union_of_pieces;
+  silhouette_options.method = clip_method::silhouette;
+  std::string reference_error, silhouette_error;
+  shadow_region a, b;
+  try {
+    a = compute_shadow_region(s, reference_options);
+  } catch (const error& e) {
+    reference_error = e.what();
+  }
+  try {
+    b = compute_shadow_region(s, silhouette_options);
+  } catch (const error& e) {
+    silhouette_error = e.what();
+  }
+  REQUIRE(silhouette_error == reference_error);
+  if (!reference_error.empty()) return 0;
+  CHECK(b.area_squared == a.area_squared);
+  CHECK(b.chart_area == a.chart_area);
+  REQUIRE(b.polygons.size() == a.polygons.size());
+  for (std::size_t i = 0; i < a.polygons.size(); ++i) {
+    CHECK(b.polygons[i].outer == a.polygons[i].outer);
+    CHECK(b.polygons[i].holes == a.polygons[i].holes);
+    CHECK(b.polygons[i].outer_3d == a.polygons[i].outer_3d);
+    CHECK(b.polygons[i].holes_3d == a.polygons[i].holes_3d);
+  }
+  REQUIRE(b.degenerate.size() == a.degenerate.size());
+  for (std::size_t i = 0; i < a.degenerate.size(); ++i) {
+    CHECK(b.degenerate[i].a == a.degenerate[i].a);
+    CHECK(b.degenerate[i].b == a.degenerate[i].b);
+    CHECK(b.degenerate[i].a_3d == a.degenerate[i].a_3d);
+  }
+  std::vector<std::string> ca, cb;
+  for (auto c : a.cases) ca.emplace_back(to_string(c));
+  for (auto c : b.cases) cb.emplace_back(to_string(c));
+  CHECK(cb == ca);
+  CHECK(b.projected_loops == a.projected_loops);
+  CHECK(b.projected_degenerate == a.projected_degenerate);
+  return 1;
+}
+
+std::vector<std::string> scene_files() {
+  std::vector<std::string> out;
+  for (const char* dir : {"/examples/scenes", "/tests/data/scenes"})
+    for (const auto& e : std::filesystem::directory_iterator(std::string(SHADOWPROOF_SOURCE_DIR) + dir))
+      if (e.path().extension() == ".json") out.push_back(e.path().string());
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("silhouette and union-of-pieces builders give the identical region on every bundled and test scene") {
+  int compared = 0, files = 0;
+  for (const auto& path : scene_files()) {
+    scene s;
+    try {
+      s = read_scene_file(path);
+    } catch (const error&) {
+      continue;  // the malformed scenes of tests/data/scenes fail before any builder runs
+    }
+    ++files;
+    compared += compare_builders(s, path);
+  }
+  compared += compare_builders(make_demo_scene(), "make_demo_scene()");
+  CHECK(files >= 10);
+  CHECK(compared >= 10);
+}
+
+TEST_CASE("silhouette and union-of-pieces builders give the identical region on random meshes and soups") {
+  // SHADOWPROOF_CLIP_SWEEP=N runs N scenes instead of 1200 (docs/clipping.md).
+  std::size_t scenes = 1200;
+  if (const char* n = std::getenv("SHADOWPROOF_CLIP_SWEEP")) scenes = static_cast<std::size_t>(std::stoull(n));
+  mt_source src{std::mt19937_64(20261201)};
+  std::size_t compared = 0;
+  for (std::size_t i = 0; i < scenes; ++i) {
+    const scene s = generate_clip_scene(src);
+    compared += static_cast<std::size_t>(compare_builders(s, "random scene " + std::to_string(i)));
+  }
+  CHECK(compared >= scenes * 7 / 10);  // the rest: random non-simple polygons, rejected alike
+}
+
+TEST_CASE("light on the receiver plane: only the casters' footprint in the plane shades") {
+  // Receiver [0,4]² in z = 0, point light (0,2,0) in that plane, the triangle (1,1) (2,2)
+  // (1,3) lying on it. The segment from a receiver point to the light stays in the plane and
+  // meets the caster only in the plane: the shadow is the footprint, base 2 × height 1 / 2 = 1
+  // (not the 11 of the region behind the triangle as seen from the light).
+  receiver_polygon rec;
+  rec.outer.vertices = {p3(0, 0, 0), p3(4, 0, 0), p3(4, 4, 0), p3(0, 4, 0)};
+  for (const auto method : {clip_method::silhouette, clip_method::union_of_pieces}) {
+    clip_options o;
+    o.method = method;
+    const auto r = compute_shadow_region(make_scene(pt(0, 2, 0), {polygon_caster({p3(1, 1, 0), p3(2, 2, 0), p3(1, 3, 0)})}, rec), o);
+    CHECK(r.area_squared == 1);
+    REQUIRE(r.polygons.size() == 1);
+    CHECK(same_ring(r.polygons[0].outer, {p2(1, 1), p2(2, 2), p2(1, 3)}));
+    CHECK(r.has(shadow_case::light_on_plane));
+    // The same under a directional light parallel to the plane, towards (−1, 0, 0).
+    const auto d = compute_shadow_region(make_scene(dir(-1, 0, 0), {polygon_caster({p3(1, 1, 0), p3(2, 2, 0), p3(1, 3, 0)})}, rec), o);
+    CHECK(d.area_squared == 1);
+    CHECK(d.has(shadow_case::light_parallel));
+  }
+}
+
+TEST_CASE("a polygon folding back on itself is rejected as not simple") {
+  // (1,1) (3,1) (2,1) (2,2): the edge (3,1)-(2,1) runs back over (1,1)-(3,1).
+  const scene s = make_scene(dir(0, 0, 1), {polygon_caster({p3(1, 1, 1), p3(3, 1, 1), p3(2, 1, 1), p3(2, 2, 1)})});
+  for (const auto method : {clip_method::silhouette, clip_method::union_of_pieces}) {
+    clip_options o;
+    o.method = method;
+    CHECK_THROWS_WITH(compute_shadow_region(s, o), "[shadowproof.scene.self_intersecting] /casters/0/polygon is not a "
+                                                   "simple polygon (its edges fold back on each other)");
+  }
+  receiver_polygon rec;
+  rec.outer.vertices = {p3(0, 0, 0), p3(10, 0, 0), p3(5, 0, 0), p3(5, 5, 0)};
+  CHECK_THROWS_WITH(compute_shadow_region(make_scene(dir(0, 0, 1), {}, rec)),
+                    "[shadowproof.scene.self_intersecting] /receiver/polygon is not a simple polygon (its edges fold back on each other)");
+}
+
+namespace {
+
+// p/q in lowest terms (GMP's two-argument constructor does not reduce, and every rational
+// operation expects reduced operands).
+rational canonical(long p, long q) {
+  rational r(p, q);
+  r.canonicalize();
+  return r;
+}
+
+// A polygon in the plane z = 1/2 + x/4 (crossing the receiver z = 0 at x = −2), as one face
+// and as a fan of triangles from `centre` (a valid triangulation: the polygon is star-shaped
+// from there).
+std::pair<caster, caster> face_and_fan(const std::vector<point2>& ring, const point2& centre) {
+  caster face, fan;
+  face.name = "/casters/0/polygon";
+  face.is_polygon = true;
+  fan.name = "/casters/0/mesh";
+  const auto lift = [](const point2& q) { return p3(q[0], q[1], rational(1, 2) + q[0] / 4); };
+  face.faces.emplace_back();
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    face.vertices.push_back(lift(ring[i]));
+    face.faces.back().push_back(i);
+    fan.vertices.push_back(lift(ring[i]));
+  }
+  fan.vertices.push_back(lift(centre));
+  for (std::size_t i = 0; i < ring.size(); ++i) fan.faces.push_back({ring.size(), i, (i + 1) % ring.size()});
+  return {face, fan};
+}
+
+}  // namespace
+
+TEST_CASE("a face at the 4096-vertex cap casts like the same polygon as triangles, in O(n log n)") {
+  // Convex: (t, t²/3 − 3/2) for t = −3 + 6k/n on a parabola; star: radii 3 and 2 alternating
+  // along directions walking the square [−1,1]² counter-clockwise (not convex, star-shaped
+  // from the origin).
+  receiver_polygon rec;
+  rec.outer.vertices = {p3(-8, -8, 0), p3(8, -8, 0), p3(8, 8, 0), p3(-8, 8, 0)};
+  const std::size_t n = 4096;
+  std::vector<point2> convex, star;
+  for (std::size_t k = 0; k < n; ++k) {
+    const rational t = rational(-3) + canonical(6 * static_cast<long>(k), static_cast<long>(n));
+    convex.push_back(p2(t, t * t / 3 - rational(3, 2)));
+  }
+  std::reverse(convex.begin(), convex.end());  // counter-clockwise
+  for (std::size_t k = 0; k < n; ++k) {
+    const long side = static_cast<long>(k / (n / 4)), j = static_cast<long>(k % (n / 4));
+    const rational a = rational(-1) + canonical(2 * j, static_cast<long>(n / 4));
+    const point2 d = side == 0 ? p2(1, a) : side == 1 ? p2(-a, 1) : side == 2 ? p2(-1, -a) : p2(a, -1);
+    const rational r = k % 2 == 0 ? rational(3) : rational(2);
+    star.push_back(p2(r * d[0], r * d[1]));
+  }
+  for (const auto& ring : {convex, star}) {
+    const auto [face, fan] = face_and_fan(ring, p2(0, 0));
+    const auto a = compute_shadow_region(make_scene(dir(1, 0, 4), {face}, rec));
+    const auto b = compute_shadow_region(make_scene(dir(1, 0, 4), {fan}, rec));
+    CHECK(a.area_squared == b.area_squared);
+    CHECK(a.area_squared > 0);
+    REQUIRE(a.polygons.size() == b.polygons.size());
+    CHECK(a.polygons[0].outer == b.polygons[0].outer);
+    CHECK(a.has(shadow_case::caster_crosses_receiver));
+  }
+}
+
+TEST_CASE("a closed mesh's shared edges cancel: only its silhouette reaches the arrangement") {
+  // The cube [1,3]³ as 12 triangles (36 half-edges) under the sun towards (1,1,2): every
+  // face casts (front and back faces both, flipped to one orientation); the shared edges of
+  // two faces on the same side cancel; what is left is the hexagonal silhouette, each edge
+  // twice (once from the front faces, once from the back ones).
+  caster cube;
+  cube.name = "/casters/0/mesh";
+  for (int k = 0; k < 8; ++k) cube.vertices.push_back(p3(k & 1 ? 3 : 1, k & 2 ? 3 : 1, k & 4 ? 3 : 1));
+  cube.faces = {{0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}, {0, 1, 5}, {0, 5, 4},
+                {2, 6, 7}, {2, 7, 3}, {0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}};
+  receiver_polygon rec;
+  rec.outer.vertices = {p3(-4, -4, 0), p3(6, -4, 0), p3(6, 6, 0), p3(-4, 6, 0)};
+  const auto r = compute_shadow_region(make_scene(dir(1, 1, 2), {cube}, rec));
+  CHECK(r.face_half_edges == 36);
+  CHECK(r.silhouette_edges == 6);
+  CHECK(r.area_squared == 64);  // the hexagon hull of [−1/2,3/2]² and [1/2,5/2]², area 8
+}
+
+TEST_CASE("the decimal area is the correctly rounded square root of area_squared") {
+  shadow_region r;
+  r.area_squared = 2;
+  CHECK(approximate_area(r) == 1.4142135623730951);  // √2 = 1.41421356237309504880…
+  r.area_squared = rational(5650129, 32400);         // (2377/180)²
+  CHECK(approximate_area(r) == to_nearest_double(rational(2377, 180)));
+  r.area_squared = 0;
+  CHECK(approximate_area(r) == 0.0);
 }

@@ -140,3 +140,28 @@ TEST_CASE("mesh files are found relative to the scene file") {
   CHECK_THROWS_WITH(read_scene_file(data_dir + "/no_such_scene.json"),
                     Catch::StartsWith("[shadowproof.scene.unreadable] cannot open the scene file"));
 }
+
+TEST_CASE("mesh numbers read by the OFF fast path equal parse_number's exact values") {
+  // Plain decimals take a shortcut to an exact rational; anything else goes through
+  // parse_number. Either way the value is parse_number's.
+  const std::vector<std::string> words = {"-52.9283", "0.1",   "007.50", "-0",   "-0.000", "123456789012345678",
+                                          "1234567890123456789", "0.000000000000000001", "5.", ".5", "1e-3",
+                                          "1/3",      "-2.5e2", "0x1.8p-3", "f32:0.1", "99999999.9999999999"};
+  for (const auto& w : words) {
+    std::istringstream in("OFF 3 1 0\n" + w + " 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+    const caster c = read_off(in, "t.off");
+    INFO(w);
+    CHECK(c.vertices[0][0] == parse_number(w));
+  }
+  std::istringstream bad("OFF 3 1 0\n1.2.3 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  CHECK_THROWS_WITH(read_off(bad, "t.off"), Catch::StartsWith("[shadowproof.scene.bad_number] t.off line 2: \"1.2.3\" is not a valid number: "));
+}
+
+TEST_CASE("mesh and scene files are read through the size-capped reader") {
+  scene_limits tiny;
+  tiny.max_file_bytes = 10;
+  CHECK_THROWS_WITH(read_mesh_file(data_dir + "/meshes/tetra.off", "/casters/0/mesh/file", tiny),
+                    Catch::StartsWith("[shadowproof.io.too_large] ") && Catch::Contains("is larger than the limit of 10 bytes"));
+  CHECK_THROWS_WITH(read_scene_file(data_dir + "/tetra_off.json", tiny), Catch::StartsWith("[shadowproof.io.too_large] "));
+  CHECK(scene_limits{}.max_file_bytes == default_max_file_bytes);
+}

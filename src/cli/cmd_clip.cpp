@@ -1,8 +1,12 @@
 // shadowproof clip: the exact shadow region of a scene file.
-#include <fstream>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
 #include <iostream>
-#include <sstream>
 #include <memory>
+#include <sstream>
+#include <string_view>
 
 #include <nlohmann/json.hpp>
 
@@ -16,8 +20,34 @@ namespace shadowproof::cli {
 
 namespace {
 
-nlohmann::json exact2(const point2& p) { return {to_string(p[0]), to_string(p[1])}; }
-nlohmann::json exact3(const point3& p) { return {to_string(p[0]), to_string(p[1]), to_string(p[2])}; }
+nlohmann::json exact2(const point2& p) { return nlohmann::json::array({to_string(p[0]), to_string(p[1])}); }
+nlohmann::json exact3(const point3& p) { return nlohmann::json::array({to_string(p[0]), to_string(p[1]), to_string(p[2])}); }
+
+// A progress bar on stderr for runs longer than half a second, when stderr is a terminal;
+// redrawn at most ten times a second and erased at the end.
+class progress_bar {
+ public:
+  progress_bar() : enabled_(::isatty(2) != 0), start_(std::chrono::steady_clock::now()) {}
+  ~progress_bar() {
+    if (drawn_) std::cerr << "\r\033[K" << std::flush;
+  }
+  void operator()(std::string_view stage, double fraction) {
+    if (!enabled_) return;
+    const auto now = std::chrono::steady_clock::now();
+    if (now - start_ < std::chrono::milliseconds(500) || now - last_ < std::chrono::milliseconds(100)) return;
+    last_ = now;
+    drawn_ = true;
+    const int width = 30, filled = static_cast<int>(fraction * width + 0.5);
+    std::cerr << "\r[" << std::string(static_cast<std::size_t>(std::clamp(filled, 0, width)), '#')
+              << std::string(static_cast<std::size_t>(width - std::clamp(filled, 0, width)), '.') << "] "
+              << static_cast<int>(fraction * 100 + 0.5) << "% " << stage << "\033[K" << std::flush;
+  }
+
+ private:
+  bool enabled_;
+  bool drawn_ = false;
+  std::chrono::steady_clock::time_point start_, last_{};
+};
 
 template <class P, class F>
 nlohmann::json ring_json(const std::vector<P>& ring, F f) {
@@ -40,6 +70,7 @@ nlohmann::json region_json(const shadow_region& r) {
     j["polygons"].push_back(q);
   }
   j["area_squared"] = to_string(r.area_squared);
+  j["area_approx"] = approximate_area(r);
   j["chart"] = {{"dropped_axis", std::string(r.chart.axis_name(2))},
                 {"axes", {std::string(r.chart.axis_name(0)), std::string(r.chart.axis_name(1))}},
                 {"area", to_string(r.chart_area)},
@@ -53,8 +84,9 @@ nlohmann::json region_json(const shadow_region& r) {
       pts.push_back(exact3(d.a_3d));
       pts2.push_back(exact2(d.a));
     } else {
-      segs.push_back({exact3(d.a_3d), exact3(d.b_3d)});
-      segs2.push_back({exact2(d.a), exact2(d.b)});
+      // json::array: a braced pair of two-element arrays would become a JSON object.
+      segs.push_back(nlohmann::json::array({exact3(d.a_3d), exact3(d.b_3d)}));
+      segs2.push_back(nlohmann::json::array({exact2(d.a), exact2(d.b)}));
     }
   }
   j["degenerate"] = {{"segments", segs}, {"points", pts}, {"segments_chart", segs2}, {"points_chart", pts2}};
@@ -82,6 +114,7 @@ struct clip_args {
   std::string svg_file;
   bool json = false;
   bool compare_float = false;
+  std::string method = "automatic";
   scene_limits limits;  ///< every cap a hostile scene could hit, each raised by its own flag
 };
 
@@ -97,6 +130,11 @@ static const command_registration clip_registration{command{
       app.add_option("--svg", args->svg_file, "write a picture of the region in the receiver's chart");
       app.add_flag("--compare-float", args->compare_float,
                    "also run the float pipeline (float shadow matrix + Sutherland-Hodgman) and report its errors");
+      app.add_option("--method", args->method,
+                     "how the projected faces are combined: automatic, silhouette (boundary chains and winding "
+                     "numbers) or union (the reference: an exact union of every clipped piece); all give the same region")
+          ->check(CLI::IsMember({"automatic", "silhouette", "union"}))
+          ->capture_default_str();
       auto& lim = args->limits;
       app.add_option("--max-vertices", lim.max_vertices, "most caster vertices in a scene")->capture_default_str();
       app.add_option("--max-faces", lim.max_faces, "most caster faces in a scene")->capture_default_str();
@@ -112,7 +150,13 @@ static const command_registration clip_registration{command{
         clip_options options;
         options.limits = limits;
         options.keep_projected = !args->svg_file.empty();
+        options.method = args->method == "union"        ? clip_method::union_of_pieces
+                         : args->method == "silhouette" ? clip_method::silhouette
+                                                        : clip_method::automatic;
+        auto bar = std::make_shared<progress_bar>();
+        options.progress = [bar](std::string_view stage, double fraction) { (*bar)(stage, fraction); };
         const shadow_region r = compute_shadow_region(s, options);
+        bar.reset();
         if (!args->svg_file.empty()) {
           std::ostringstream svg;
           write_svg(svg, r, "shadow of " + args->scene_file);

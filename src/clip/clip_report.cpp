@@ -1,4 +1,7 @@
-// Text report of a shadow region and the demo scene.
+// Text report of a shadow region, its approximate area, and the demo scene.
+#include <mpfr.h>
+
+#include <charconv>
 #include <ostream>
 
 #include "shadowproof/clip/shadow_region.h"
@@ -21,6 +24,22 @@ point3 p3(int x, int y, int z) { return {rational(x), rational(y), rational(z)};
 
 }  // namespace
 
+double approximate_area(const shadow_region& r) {
+  // √q rounded down and up at precision p, each then rounded to 53 bits: equal means both
+  // bracket ends give the same double, which is then the correctly rounded √q.
+  for (mpfr_prec_t p = 96;; p *= 2) {
+    mpfr_t lo, hi;
+    mpfr_inits2(p, lo, hi, static_cast<mpfr_ptr>(nullptr));
+    mpfr_set_q(lo, r.area_squared.get_mpq_t(), MPFR_RNDD);
+    mpfr_set_q(hi, r.area_squared.get_mpq_t(), MPFR_RNDU);
+    mpfr_sqrt(lo, lo, MPFR_RNDD);
+    mpfr_sqrt(hi, hi, MPFR_RNDU);
+    const double a = mpfr_get_d(lo, MPFR_RNDN), b = mpfr_get_d(hi, MPFR_RNDN);
+    mpfr_clears(lo, hi, static_cast<mpfr_ptr>(nullptr));
+    if (a == b || p > 1 << 16) return a;
+  }
+}
+
 void print_region_report(std::ostream& out, const shadow_region& r) {
   out << "chart: drop " << r.chart.axis_name(2) << ", u = " << r.chart.axis_name(0) << ", v = " << r.chart.axis_name(1)
       << "; receiver plane (" << to_string(r.chart.receiver_plane.a()) << ", " << to_string(r.chart.receiver_plane.b())
@@ -32,6 +51,9 @@ void print_region_report(std::ostream& out, const shadow_region& r) {
   out << "chart area: " << to_string(r.chart_area) << '\n';
   out << "area scale squared (3D area^2 / chart area^2): " << to_string(r.chart.area_scale_squared) << '\n';
   out << "area_squared (exact square of the 3D area): " << to_string(r.area_squared) << '\n';
+  char approx[32];
+  const auto end = std::to_chars(approx, approx + sizeof approx, approximate_area(r)).ptr;
+  out << "area (decimal approximation of sqrt(area_squared)): ~" << std::string(approx, end) << '\n';
   out << "polygons: " << r.polygons.size() << '\n';
   for (std::size_t i = 0; i < r.polygons.size(); ++i) {
     const auto& p = r.polygons[i];

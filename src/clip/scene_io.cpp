@@ -3,14 +3,12 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
-#include "shadowproof/core/error.h"
 #include "shadowproof/clip/scene.h"
+#include "shadowproof/core/error.h"
+#include "shadowproof/core/io.h"
 
 namespace shadowproof {
 
@@ -302,14 +300,6 @@ struct reader {
 
 }  // namespace
 
-void check_file_size(const std::string& path, const scene_limits& limits) {
-  std::error_code ec;
-  const auto size = std::filesystem::file_size(path, ec);
-  if (!ec && size > limits.max_file_bytes)
-    throw error(errc::io_too_large, path + " is larger than the limit of " + std::to_string(limits.max_file_bytes) +
-                                    " bytes (raise it with --max-file-bytes)");
-}
-
 scene parse_scene(const std::string& json_text, const std::string& base_directory, const scene_limits& limits) {
   json root;
   exact_sax sax(root, limits);
@@ -319,15 +309,16 @@ scene parse_scene(const std::string& json_text, const std::string& base_director
 }
 
 scene read_scene_file(const std::string& path, const scene_limits& limits) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in || std::filesystem::is_directory(path))
+  std::string text;
+  try {
+    text = read_file(path, limits.max_file_bytes);
+  } catch (const error& e) {
+    if (e.code() != errc::io_cannot_read) throw;  // io.too_large names the limit
     throw error(errc::scene_unreadable, "cannot open the scene file '" + path + "'");
-  check_file_size(path, limits);
-  std::ostringstream text;
-  text << in.rdbuf();
+  }
   const auto slash = path.find_last_of('/');
   const std::string dir = slash == std::string::npos ? std::string(".") : path.substr(0, slash == 0 ? 1 : slash);
-  return parse_scene(text.str(), dir, limits);
+  return parse_scene(text, dir, limits);
 }
 
 }  // namespace shadowproof

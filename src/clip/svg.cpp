@@ -69,8 +69,18 @@ void write_svg(std::ostream& out, const shadow_region& r, const std::string& tit
   out << "<text x=\"20\" y=\"30\" font-size=\"18\" font-weight=\"bold\">" << escape(title) << "</text>\n";
   std::string cases;
   for (auto c : r.cases) cases += (cases.empty() ? "" : ", ") + std::string(to_string(c));
-  out << "<text x=\"20\" y=\"55\">shadow area in the chart: " << escape(to_string(r.chart_area))
-      << "   (3D area)\u00b2: " << escape(to_string(r.area_squared)) << "</text>\n";
+  // Exact values that fit the line; a long rational (a mesh with decimal coordinates) as its
+  // approximation, the exact value being in the text and JSON outputs.
+  const std::string chart_area = to_string(r.chart_area), area_squared = to_string(r.area_squared);
+  if (chart_area.size() + area_squared.size() <= 80) {
+    out << "<text x=\"20\" y=\"55\">shadow area in the chart: " << escape(chart_area) << "   (3D area)\u00b2: "
+        << escape(area_squared) << "</text>\n";
+  } else {
+    char approx[64];
+    std::snprintf(approx, sizeof approx, "%.10g", approximate_area(r));
+    out << "<text x=\"20\" y=\"55\">shadow area (3D): ~" << approx
+        << " (the exact area_squared, a rational of " << area_squared.size() << " digits, is in the text and JSON output)</text>\n";
+  }
   out << "<text x=\"20\" y=\"78\">cases: " << escape(cases.empty() ? "none" : cases) << "</text>\n";
 
   // Plot frame and clip to it (projected casters may leave the view box only by rounding).

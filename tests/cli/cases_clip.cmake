@@ -68,3 +68,38 @@ shadowproof_cli_case(NAME "clip: missing scene file"
 shadowproof_cli_case(NAME "clip: degenerate pieces, points and segments in JSON"
   ARGS clip ${PROJECT_SOURCE_DIR}/examples/scenes/degenerate_pieces.json --json EXPECT_CODE 0
   STDOUT_REGEX "\"area_squared\": \"49/16\".*\"points\": \\[[ \n]*\\[[ \n]*\"10\",[ \n]*\"10\",[ \n]*\"0\"[ \n]*\\][ \n]*\\].*\"segments\": \\[[ \n]*\\[[ \n]*\\[[ \n]*\"2\",[ \n]*\"2\",[ \n]*\"0\"[ \n]*\\],[ \n]*\\[[ \n]*\"9/2\",[ \n]*\"9/2\",[ \n]*\"0\"")
+
+# The light on the receiver's plane: the segment from a receiver point to the light stays in
+# the plane, so only the casters' footprint shades (the triangle (1,1) (2,2) (1,3), area 1; the
+# points behind it as seen from the light are not shadow).
+shadowproof_cli_case(NAME "clip: light on the receiver plane shades the casters' footprint only"
+  ARGS clip ${CLIP_SCENES}/light_on_plane_footprint.json EXPECT_CODE 0
+  STDOUT_REGEX "cases: light_on_plane caster_in_receiver_plane\n.*area_squared \\(exact square of the 3D area\\): 1\n")
+# (1,1) (3,1) (2,1) (2,2): the edges (1,1)-(3,1) and (3,1)-(2,1) overlap.
+shadowproof_cli_case(NAME "clip: a caster folding back on itself is not a simple polygon"
+  ARGS clip ${CLIP_SCENES}/fold_back.json EXPECT_CODE 2 STDOUT_EMPTY
+  STDERR_REGEX "scene.self_intersecting. /casters/0/polygon is not a simple polygon \\(its edges fold back on each other\\)")
+# The cube [1,3]³ as 12 triangles under the sun towards (1,1,2): height h moves by -h/2 (1,1),
+# so the shadow is the hull of [-1/2,3/2]² and [1/2,5/2]²: a hexagon of area 8, with both
+# builders.
+foreach(method silhouette union)
+  shadowproof_cli_case(NAME "clip: closed cube mesh casts a hexagon, ${method} builder"
+    ARGS clip ${CLIP_SCENES}/closed_cube.json --method ${method} EXPECT_CODE 0
+    STDOUT_REGEX "area_squared \\(exact square of the 3D area\\): 64\narea \\(decimal approximation of sqrt\\(area_squared\\)\\): ~8\npolygons: 1\n  polygon 0:\n    outer \\(6 vertices")
+endforeach()
+
+# Every JSON field against the text report, on every valid example and test scene.
+foreach(scene
+    ${PROJECT_SOURCE_DIR}/examples/scenes/demo.json
+    ${PROJECT_SOURCE_DIR}/examples/scenes/degenerate_pieces.json
+    ${PROJECT_SOURCE_DIR}/examples/scenes/panel_above_light.json
+    ${PROJECT_SOURCE_DIR}/examples/scenes/pyramid_on_ramp.json
+    ${CLIP_SCENES}/square_under_sun.json ${CLIP_SCENES}/decimal_numbers.json ${CLIP_SCENES}/tetra_off.json
+    ${CLIP_SCENES}/light_parallel.json ${CLIP_SCENES}/edge_on.json ${CLIP_SCENES}/light_on_plane_footprint.json
+    ${CLIP_SCENES}/closed_cube.json)
+  get_filename_component(scene_name ${scene} NAME)
+  add_test(NAME "cli: clip --json matches the text report on ${scene_name}"
+    COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:shadowproof_cli> -DSCENE=${scene}
+            -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/clip_json_matches_text.cmake)
+  set_tests_properties("cli: clip --json matches the text report on ${scene_name}" PROPERTIES LABELS cli)
+endforeach()

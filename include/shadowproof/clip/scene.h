@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "shadowproof/core/io.h"
 #include "shadowproof/core/light.h"
 #include "shadowproof/core/number.h"
 
@@ -57,7 +58,7 @@ struct scene_limits {
   number_limits numbers{};               ///< size of every number read
   std::size_t max_json_depth = 64;        ///< nesting of JSON arrays and objects
   std::size_t max_json_values = 20'000'000;  ///< values in one JSON document
-  std::size_t max_file_bytes = std::size_t(256) << 20;  ///< size of a scene or mesh file
+  std::size_t max_file_bytes = default_max_file_bytes;  ///< size of a scene or mesh file (core/io.h)
 };
 
 /// Reads a scene from JSON text. Schema:
@@ -73,8 +74,9 @@ struct scene_limits {
 scene parse_scene(const std::string& json_text, const std::string& base_directory,
                   const scene_limits& limits = {});
 
-/// Reads the scene file at `path`; relative mesh paths are relative to its directory.
-/// Throws error "scene.unreadable" when the file cannot be opened.
+/// Reads the scene file at `path` (core/io.h's read_file, capped at limits.max_file_bytes);
+/// relative mesh paths are relative to its directory. Throws error "scene.unreadable" when the
+/// file cannot be opened, "io.too_large" when it is larger than the cap.
 scene read_scene_file(const std::string& path, const scene_limits& limits = {});
 
 /// Reads an OFF mesh ("OFF", counts "nv nf ne", nv vertex lines, nf face lines "n i0 .. in-1";
@@ -85,11 +87,11 @@ caster read_off(std::istream& in, const std::string& what, const scene_limits& l
 /// end, "a/t/n" forms accepted); other statements are ignored. Numbers are read exactly.
 caster read_obj(std::istream& in, const std::string& what, const scene_limits& limits = {});
 
-/// Throws error "io.too_large" when the file at `path` is larger than limits.max_file_bytes.
-void check_file_size(const std::string& path, const scene_limits& limits);
-
-/// Reads an OFF or OBJ file chosen by its extension (.off / .obj, case-insensitive).
-/// Throws error "scene.mesh_unreadable" naming `what` and the path when it cannot be opened.
+/// Reads an OFF or OBJ file chosen by its extension (.off / .obj, case-insensitive), whole
+/// (core/io.h's read_file, capped at limits.max_file_bytes). Every coordinate becomes an exact
+/// rational once (plain decimals such as -52.9283 without the general parser), shared by all
+/// the faces that use it. Throws error "scene.mesh_unreadable" naming `what` and the path
+/// when it cannot be opened, "io.too_large" when it is larger than the cap.
 caster read_mesh_file(const std::string& path, const std::string& what,
                       const scene_limits& limits = {});
 

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "shadowproof/core/random.h"
+#include "shadowproof/core/vec3.h"
 
 namespace shadowproof {
 
@@ -38,25 +39,10 @@ std::array<F, 3> small_vector(Source& src, long r) {
   return {F(small_int(src, r)), F(small_int(src, r)), F(small_int(src, r))};
 }
 
-template <class F>
-std::array<F, 3> cross(const std::array<F, 3>& u, const std::array<F, 3>& v) {
-  return {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
-}
-
-template <class F>
-F dot3(const std::array<F, 3>& u, const std::array<F, 3>& v) {
-  return u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
-}
-
-template <class F>
-bool is_zero3(const std::array<F, 3>& v) {
-  return v[0] == 0 && v[1] == 0 && v[2] == 0;
-}
-
 template <class F, class Source>
 std::array<F, 3> nonzero_vector(Source& src, long r) {
   auto v = small_vector<F>(src, r);
-  while (is_zero3(v)) v[src.below(3)] = F(1 + static_cast<long>(src.below(static_cast<std::uint64_t>(r))));
+  while (is_zero(v)) v[src.below(3)] = F(1 + static_cast<long>(src.below(static_cast<std::uint64_t>(r))));
   return v;
 }
 
@@ -78,7 +64,7 @@ std::array<F, 3> random_normal(Source& src) {
 template <class F, class Source>
 std::array<F, 3> orthogonal_to(Source& src, const std::array<F, 3>& n) {
   auto u = cross(n, nonzero_vector<F>(src, 5));
-  for (std::size_t axis = 0; is_zero3(u) && axis < 3; ++axis) {
+  for (std::size_t axis = 0; is_zero(u) && axis < 3; ++axis) {
     std::array<F, 3> e{F(0), F(0), F(0)};
     e[axis] = F(1);
     u = cross(n, e);
@@ -144,9 +130,9 @@ generated_case<F> generate_shadow_case(Source& src, const generator_requirements
     const auto dir = nonzero_vector<F>(src, 9);
     c.light = {dir[0], dir[1], dir[2], F(0)};
   } else if (family == "light_on_plane") {
-    P[3] = -dot3(n, light_pos);
+    P[3] = -dot(n, light_pos);
   } else if (family == "vertex_on_plane") {
-    P[3] = -dot3(n, V);
+    P[3] = -dot(n, V);
   } else if (family == "vertex_at_light_height") {
     const auto u = orthogonal_to<F>(src, n);
     V = {light_pos[0] + u[0], light_pos[1] + u[1], light_pos[2] + u[2]};
@@ -157,8 +143,8 @@ generated_case<F> generate_shadow_case(Source& src, const generator_requirements
     // a point of the receiver to the side away from the light (below the receiver).
     const bool beyond = family == "vertex_beyond_light";
     const auto base = beyond ? light_pos : V;
-    if (!beyond) P[3] = -dot3(n, base);  // put the base point on the receiver
-    const F light_value = c.light[3] == 0 ? dot3(n, {c.light[0], c.light[1], c.light[2]}) : plane_value(P, light_pos);
+    if (!beyond) P[3] = -dot(n, base);  // put the base point on the receiver
+    const F light_value = c.light[3] == 0 ? dot(n, {c.light[0], c.light[1], c.light[2]}) : plane_value(P, light_pos);
     const F side = light_value >= 0 ? F(1) : F(-1);
     const F k = (beyond ? side : -side) * F(1 + static_cast<long>(src.below(4)));
     V = {base[0] + k * n[0], base[1] + k * n[1], base[2] + k * n[2]};

@@ -1,0 +1,57 @@
+#pragma once
+// The exact CGAL kernel of the clip subsystem and conversions between its numbers and
+// `rational`. Only src/clip/*.cpp include this header; CGAL types never reach a public header.
+//
+// Epeck (lazy exact numbers behind interval filters) was measured against
+// Cartesian<mpq_class> on the 10k-triangle sphere and is faster (docs/clipping.md);
+// SHADOWPROOF_CLIP_CARTESIAN_GMPQ switches to the other one.
+#include <CGAL/Cartesian.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+
+#include <type_traits>
+
+#include "shadowproof/clip/shadow_region.h"
+
+namespace shadowproof::detail {
+
+#ifdef SHADOWPROOF_CLIP_CARTESIAN_GMPQ
+using kernel = CGAL::Cartesian<mpq_class>;
+#else
+using kernel = CGAL::Exact_predicates_exact_constructions_kernel;
+#endif
+using ft = kernel::FT;
+using cpoint = kernel::Point_2;
+using csegment = kernel::Segment_2;
+
+// Templates, so that only the branch of the kernel's exact type is instantiated.
+template <class F>
+F to_field(const rational& q) {
+  if constexpr (std::is_same_v<F, rational>) {
+    return q;
+  } else {
+    using et = typename F::ET;
+    if constexpr (std::is_same_v<et, rational>) return F(q);
+    else return F(et(q.get_mpq_t()));
+  }
+}
+
+template <class F>
+rational from_field(const F& x) {
+  if constexpr (std::is_same_v<F, rational>) {
+    return x;
+  } else {
+    using et = std::decay_t<decltype(CGAL::exact(x))>;
+    if constexpr (std::is_same_v<et, rational>) return CGAL::exact(x);
+    else return rational(CGAL::exact(x).mpq());
+  }
+}
+
+/// The kernel's field number equal to q (exact).
+inline ft to_ft(const rational& q) { return to_field<ft>(q); }
+/// The rational equal to x (forces the exact value of a lazy number).
+inline rational to_q(const ft& x) { return from_field<ft>(x); }
+
+inline cpoint to_cpoint(const point2& p) { return cpoint(to_ft(p[0]), to_ft(p[1])); }
+inline point2 to_point2(const cpoint& p) { return {to_q(p.x()), to_q(p.y())}; }
+
+}  // namespace shadowproof::detail
