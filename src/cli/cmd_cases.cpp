@@ -19,6 +19,10 @@ struct cases_options {
   std::size_t count = 100;
   std::uint64_t seed = 1;
   bool directional = false;
+  bool point_lights = false;
+  bool unit_normal = false;
+  bool symmetric = false;
+  bool clamps = false;
   std::vector<std::string> conventions;  // name=value, written into every line
 };
 
@@ -44,11 +48,17 @@ int run_cases(const cases_options& o) {
     cls = input_class_from_string(o.cls);
     if (!cls)
       throw error(errc::verify_unknown_class,
-                  "unknown --class '" + o.cls + "'; expected regular, near-degenerate or degenerate");
+                  "unknown --class '" + o.cls + "'; expected regular, near-degenerate, degenerate or range");
   }
+  if (o.directional && o.point_lights)
+    throw error(errc::verify_requirements, "--directional and --point-lights exclude each other");
   conventions requirements;
   apply_conventions(requirements, o.conventions);
   requirements.directional_only = o.directional;
+  requirements.point_light_only = o.point_lights;
+  requirements.unit_normal = o.unit_normal;
+  requirements.symmetric_view = requirements.symmetric_view || o.symmetric;
+  requirements.clamps_behind_receiver = requirements.clamps_behind_receiver || o.clamps;
   for (const auto& c : generate_cases(*op, *type, o.count, o.seed, cls, requirements))
     std::cout << case_json_line(c, requirements) << '\n';
   return 0;
@@ -63,8 +73,14 @@ const command_registration reg{command{
           ->capture_default_str();
       app.add_option("--count", o->count, "number of cases")->capture_default_str();
       app.add_option("--seed", o->seed, "generator seed (same seed, byte-identical output)")->capture_default_str();
-      app.add_option("--class", o->cls, "only regular, near-degenerate or degenerate cases (default: cycle)");
+      app.add_option("--class", o->cls, "only regular, near-degenerate, degenerate or range cases (default: cycle)");
       app.add_flag("--directional", o->directional, "directional lights only (w = 0)");
+      app.add_flag("--point-lights", o->point_lights, "point lights only (w = 1)");
+      app.add_flag("--unit-normal", o->unit_normal, "planes with a unit normal only (±1 on one axis, as y = h)");
+      app.add_flag("--symmetric", o->symmetric, "view volumes symmetric only (l = −r, b = −t)");
+      app.add_flag("--clamps-behind-receiver", o->clamps,
+                   "shadow-point: receivers oriented with the light on their positive side (for routines that "
+                   "leave points behind the receiver in place)");
       app.add_option("--convention", o->conventions,
                      "name=value, repeatable: a convention written into every line, in which the inputs "
                      "are written and the outputs read (docs/protocol.md), e.g. depth=d3d, handedness=left, "

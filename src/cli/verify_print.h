@@ -1,27 +1,32 @@
 #pragma once
-// Tables, JSON and reproducers shared by `shadowproof check` and `shadowproof grade`.
+// Reports shared by `shadowproof check` and `shadowproof grade`: the verdict table, the example
+// cases with their reproducers, and the JSON documents. Text is at most `width` columns (100 by
+// default); --wide and --json show every field.
 #include <nlohmann/json.hpp>
 
+#include <cstdint>
 #include <functional>
 #include <ostream>
 #include <string>
 #include <vector>
 
-#include "shadowproof/verify/operation.h"
-#include "shadowproof/verify/conventions.h"
-#include "shadowproof/verify/implementation.h"
 #include "shadowproof/verify/cases.h"
+#include "shadowproof/verify/conventions.h"
 #include "shadowproof/verify/grade.h"
+#include "shadowproof/verify/operation.h"
 #include "shadowproof/verify/report.h"
 
 namespace shadowproof::cli {
 
-/// One row of a report: an implementation (or a graded file) on one operation and class.
-struct report_row {
-  std::string impl;
-  operation op;
-  scalar_type type;
-  std::string cls;  ///< input class name, or "all"
+/// How much a text report shows.
+struct report_style {
+  bool wide = false;       ///< every example per verdict, every output of an example, the inputs
+  std::size_t width = 100;  ///< the longest line (a reproducer wraps with backslashes)
+};
+
+/// One row of the verdict table.
+struct verdict_row {
+  std::string label;  ///< implementation name, or name and class
   grade_summary summary;
 };
 
@@ -30,24 +35,39 @@ using case_lookup = std::function<const test_case&(std::uint64_t id)>;
 /// Finds the conventions a case is graded in (by id).
 using conventions_lookup = std::function<const conventions&(std::uint64_t id)>;
 
-/// Fixed-width table: impl, op, class, cases, max ulps, median, max bits, histogram, counts.
-void print_table(std::ostream& out, const std::vector<report_row>& rows);
+/// The verdict table: label, verdict, then the cases of each verdict.
+void print_verdict_table(std::ostream& out, const std::vector<verdict_row>& rows, const report_style& style);
 
-/// The worst case of a grade as a bit-exact reproducer: inputs as hex floats, the output that
-/// is furthest off (got vs correctly rounded exact), and the shadowproof command that prints
-/// the exact answer.
-void print_worst(std::ostream& out, const std::string& title, const case_grade& g, const test_case& c,
-                 const conventions& conv = {});
+/// The example cases of one implementation: its worst finite case and its worst non-finite case
+/// (wide: one case per verdict worse than faithful), each with the output that decided its
+/// verdict, the conditioning and the command that prints the exact answer.
+void print_examples(std::ostream& out, const std::string& name, const grade_summary& s, const case_lookup& lookup,
+                    const conventions_lookup& conv_of, const report_style& style);
 
-/// JSON of a summary: cases, max_ulps, median_ulps, max_bits, bits_histogram, nonfinite,
-/// garbage, misclassified, worst (id, class, output, got, expected, ulps, bits, inputs, ...).
-nlohmann::json summary_json(const grade_summary& s, const case_lookup& lookup,
-                            const conventions_lookup& conv_of);
+/// A count of ulps: the number itself below 2^16, a power of two above ("2^31.2").
+std::string ulps_text(std::uint64_t ulps);
+/// x in scientific notation with three significant digits ("3.20e-04"), or inf / nan.
+std::string scientific(double x);
 
-/// The declared conventions of an implementation as JSON (storage, vectors, light, depth, flags).
+/// The command on lines of at most `width` columns, continued with " \" at word boundaries and
+/// indented by `indent`; a word longer than a line is cut after a comma with a backslash and
+/// continued at column 0, which a POSIX shell joins back into the same word.
+std::string wrap_command(const std::string& command, std::size_t indent, std::size_t width);
+
+/// JSON of a summary: cases, verdict, verdicts (counts by name), max_ulps, median_ulps, max_bits,
+/// bits_histogram, nonfinite, garbage, misclassified, worst (cases), worst_finite,
+/// worst_nonfinite, examples.
+nlohmann::json summary_json(const grade_summary& s, const case_lookup& lookup, const conventions_lookup& conv_of);
+
+/// One case as JSON: id, class, closeness, verdict, rejected, the deciding output (name, got,
+/// expected, ulps, bits, relative error, condition, backward error), normwise conditioning,
+/// scale and pivot, classes, inputs, reproduce, and (wide) every output.
+nlohmann::json case_json(const case_grade& g, const test_case& c, const conventions& conv, bool every_output = true);
+
+/// The cases per verdict, by name ({"exact": 12, "faithful": 3, ...}; every verdict present).
+nlohmann::json verdict_counts_json(const grade_summary& s);
+
+/// The declared conventions as JSON (storage, vectors, light, depth, sentinel, flags).
 nlohmann::json conventions_json(const conventions& c);
-
-/// One worst case as JSON.
-nlohmann::json worst_json(const case_grade& g, const test_case& c, const conventions& conv = {});
 
 }  // namespace shadowproof::cli

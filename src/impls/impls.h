@@ -11,6 +11,7 @@ void add_seed_shadow_point(std::vector<implementation>& out);
 void add_seed_reflection(std::vector<implementation>& out);
 void add_seed_projection(std::vector<implementation>& out);
 void add_seed_normal_matrix(std::vector<implementation>& out);
+void add_reference(std::vector<implementation>& out);
 void add_glm(std::vector<implementation>& out);
 void add_eigen(std::vector<implementation>& out);
 void add_irrlicht(std::vector<implementation>& out);

@@ -15,6 +15,7 @@ const std::vector<implementation>& builtin_implementations() {
     impls::add_seed_reflection(v);
     impls::add_seed_projection(v);
     impls::add_seed_normal_matrix(v);
+    impls::add_reference(v);
     impls::add_reference_camera(v);
 #ifdef SHADOWPROOF_HAVE_GLM
     impls::add_glm(v);

@@ -2,7 +2,9 @@
 // operation's generator and closeness measure come from its entry in the operation table.
 #include <cmath>
 
+#include "conditioning.h"
 #include "operation_table.h"
+#include "shadowproof/core/error.h"
 #include "shadowproof/verify/cases.h"
 
 namespace shadowproof {
@@ -12,12 +14,19 @@ std::string_view to_string(input_class c) {
     case input_class::regular: return "regular";
     case input_class::near_degenerate: return "near-degenerate";
     case input_class::degenerate: return "degenerate";
+    case input_class::range: return "range";
   }
   return "unknown";
 }
 
+const std::vector<input_class>& all_input_classes() {
+  static const std::vector<input_class> classes{input_class::regular, input_class::near_degenerate,
+                                                input_class::degenerate, input_class::range};
+  return classes;
+}
+
 std::optional<input_class> input_class_from_string(std::string_view name) {
-  for (input_class c : {input_class::regular, input_class::near_degenerate, input_class::degenerate})
+  for (input_class c : all_input_classes())
     if (to_string(c) == name) return c;
   return std::nullopt;
 }
@@ -30,17 +39,33 @@ std::vector<test_case> generate_cases(operation op, scalar_type type, std::size_
   r.unit_normal = requirements.unit_normal;
   std::vector<test_case> cases;
   cases.reserve(count);
-  const input_class cycle[3] = {input_class::regular, input_class::near_degenerate, input_class::degenerate};
+  const std::vector<input_class>& cycle = all_input_classes();
+  // Near-degenerate means within the type's resolution and not on the degeneracy: closer than
+  // 2^-(p−1), the inputs' rounding decides the answer; exactly on it is the degenerate class.
+  const double resolution = -(type == scalar_type::f32 ? 24.0 : 53.0) + 1;
   for (std::size_t i = 0; i < count; ++i) {
     test_case c;
     c.id = first_id + i;
     c.op = op;
     c.type = type;
-    c.cls = cls ? *cls : cycle[i % 3];
+    c.cls = cls ? *cls : cycle[i % cycle.size()];
     c.inputs.assign(spec.signature.input_count, 0.0);
-    spec.generate(r, c.cls, requirements, c.inputs.data());
-    for (double& x : c.inputs)
-      if (x == 0) x = 0.0;  // no −0: the case file's exact decimals could not tell them apart
+    for (int attempt = 0;; ++attempt) {
+      spec.generate(r, c.cls, requirements, c.inputs.data());
+      for (double& x : c.inputs)
+        if (x == 0) x = 0.0;  // no −0: the case file's exact decimals could not tell them apart
+      c.closeness = spec.closeness(c.inputs.data());
+      if (c.cls == input_class::near_degenerate) {
+        if (std::isfinite(c.closeness) && c.closeness >= resolution) break;
+      } else if (c.cls == input_class::range) {
+        if (detail::leaves_range(c, requirements)) break;
+      } else {
+        break;
+      }
+      if (attempt == 1000)
+        throw internal_error("the " + std::string(to_string(c.cls)) + " generator of " + std::string(spec.name) +
+                             " keeps missing its class");
+    }
     cases.push_back(std::move(c));
   }
   return cases;

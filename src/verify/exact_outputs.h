@@ -8,6 +8,7 @@
 #include <optional>
 #include <type_traits>
 
+#include "dual.h"
 #include "oracle_interval.h"
 #include "shadowproof/constructions/classify.h"
 #include "shadowproof/core/homogeneous.h"
@@ -23,9 +24,12 @@ namespace shadowproof::detail {
 using ival32 = interval<double>;
 using ival64 = interval<long double>;
 
+// The number N for the input or output value at x. Taken by reference: for the dual numbers of
+// the derivative evaluation (dual.h), an input is told apart by its address.
 template <class N>
-N from_double(double x) {
+N from_double(const double& x) {
   if constexpr (std::is_same_v<N, rational>) return exact_value(x);
+  else if constexpr (is_dual<N>::value) return dual_from_double<typename N::base>(x);
   else return N::point(x);
 }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "shadowproof/core/number.h"
 #include "shadowproof/core/ulp.h"
 
 namespace shadowproof {
@@ -21,6 +22,18 @@ const operation_spec& spec_of(operation op) {
 std::string hex_list(const test_case& c, std::size_t first, std::size_t n) {
   std::string s;
   for (std::size_t i = 0; i < n; ++i) s += (i ? "," : "") + hex_string(c.inputs[first + i]);
+  return s;
+}
+
+std::string exact_command(const test_case& c, const conventions& conv) {
+  std::string s = "shadowproof exact --op " + std::string(spec_of(c.op).name) + " --type " +
+                  std::string(to_string(c.type)) + " --inputs " + hex_list(c, 0, c.inputs.size());
+  if (conv.light == light_sign::along_rays) s += " --light along-rays";
+  if (conv.depth != depth_convention::gl) s += " --depth " + std::string(to_string(conv.depth));
+  if (conv.clamps_behind_receiver) s += " --clamps-behind-receiver";
+  if (conv.symmetric_view) s += " --symmetric";
+  if (conv.hand == handedness::left) s += " --convention handedness=left";
+  if (conv.angle == angle_unit::degrees) s += " --convention angle=degrees";
   return s;
 }
 
@@ -44,8 +57,15 @@ double log2_relative_dot(const double* a, const double* b, std::size_t nb) {
   for (std::size_t i = 0; i < nb; ++i) d += static_cast<long double>(a[i]) * b[i];
   if (nb == 3) d += a[3];  // b is a finite point (x, y, z, 1)
   const long double nbn = nb == 3 ? std::sqrt(norm(b, 3) * norm(b, 3) + 1) : norm(b, 4);
-  if (d == 0) return -std::numeric_limits<double>::infinity();
-  return static_cast<double>(std::log2(std::fabs(d) / (norm(a, 4) * nbn)));
+  const long double scale = norm(a, 4) * nbn;
+  // Far from 0 the long double sum decides; near it the exact sum does (−inf exactly on it).
+  if (std::fabs(d) < 0x1p-40L * scale) {
+    rational exact = nb == 3 ? exact_value(a[3]) : rational(0);
+    for (std::size_t i = 0; i < nb; ++i) exact += exact_value(a[i]) * exact_value(b[i]);
+    if (sgn(exact) == 0) return -std::numeric_limits<double>::infinity();
+    d = static_cast<long double>(to_nearest_double(exact));
+  }
+  return static_cast<double>(std::log2(std::fabs(d) / scale));
 }
 
 std::string invalid_plane(const double* in) {
@@ -59,12 +79,29 @@ std::string invalid_plane_and_light(const double* in) {
 
 std::string never_invalid(const double*) { return ""; }
 
+namespace {
+bool square_sentinels(sentinel_kind kind, double* out, std::size_t k) {
+  if (kind == sentinel_kind::none) return false;
+  for (std::size_t i = 0; i < k * k; ++i) out[i] = kind == sentinel_kind::identity && i % (k + 1) == 0 ? 1.0 : 0.0;
+  return true;
+}
+}  // namespace
+
+bool matrix_sentinels(sentinel_kind kind, double* out) { return square_sentinels(kind, out, 4); }
+bool matrix3_sentinels(sentinel_kind kind, double* out) { return square_sentinels(kind, out, 3); }
+bool point_sentinels(sentinel_kind kind, double* out) {
+  if (kind != sentinel_kind::zero) return false;
+  out[0] = out[1] = out[2] = 0;
+  return true;
+}
+
 double box_closeness(const double* x) {
   double worst = std::numeric_limits<double>::infinity();
   for (int i = 0; i < 6; i += 2) {
+    // x[i] and x[i + 1] are doubles: their difference is 0 exactly when they are equal.
+    if (x[i + 1] == x[i]) return -std::numeric_limits<double>::infinity();
     const long double extent = std::fabs(static_cast<long double>(x[i + 1]) - x[i]);
     const long double scale = std::fabs(static_cast<long double>(x[i])) + std::fabs(static_cast<long double>(x[i + 1]));
-    if (extent == 0) return -std::numeric_limits<double>::infinity();
     worst = std::min(worst, static_cast<double>(std::log2(extent / scale)));
   }
   return worst;

@@ -10,7 +10,9 @@
 #include <limits>
 #include <type_traits>
 
+#include "conditioning.h"
 #include "operation_table.h"
+#include "scale.h"
 #include "shadowproof/core/error.h"
 #include "shadowproof/core/number.h"
 #include "shadowproof/core/ulp.h"
@@ -30,6 +32,42 @@ std::string_view to_string(image_class c) {
   return "unknown";
 }
 
+std::string_view to_string(verdict v) {
+  switch (v) {
+    case verdict::exact: return "exact";
+    case verdict::faithful: return "faithful";
+    case verdict::stable: return "stable";
+    case verdict::unstable: return "unstable";
+    case verdict::range: return "range";
+    case verdict::wrong: return "wrong";
+    case verdict::nonfinite: return "nonfinite";
+    case verdict::garbage: return "garbage";
+  }
+  return "unknown";
+}
+
+const std::vector<verdict>& all_verdicts() {
+  static const std::vector<verdict> all{verdict::exact,  verdict::faithful, verdict::stable,    verdict::unstable,
+                                        verdict::range,  verdict::wrong,    verdict::nonfinite, verdict::garbage};
+  return all;
+}
+
+std::optional<verdict> verdict_from_string(std::string_view name) {
+  for (verdict v : all_verdicts())
+    if (to_string(v) == name) return v;
+  return std::nullopt;
+}
+
+std::string output_name(operation op, std::size_t j, const conventions& conv) {
+  return output_name(op, detail::canonical_index(j, signature(op).matrix_size, conv));
+}
+
+bool sentinel_applies(operation op, sentinel_kind s) {
+  const detail::operation_spec& spec = detail::spec_of(op);
+  std::array<double, 16> outputs{};
+  return s == sentinel_kind::none || (spec.sentinel_outputs && spec.sentinel_outputs(s, outputs.data()));
+}
+
 namespace {
 
 using detail::abs_n;
@@ -47,16 +85,6 @@ exact_outputs<N> exact_outputs_of(const test_case& c, const conventions& conv) {
   if constexpr (std::is_same_v<N, rational>) return spec.exact_rational(c.inputs.data(), conv);
   else if constexpr (std::is_same_v<N, ival32>) return spec.exact_ival32(c.inputs.data(), conv);
   else return spec.exact_ival64(c.inputs.data(), conv);
-}
-
-// Canonical row-major index of the implementation's output j of a k x k matrix under its
-// storage conventions.
-std::size_t canonical_index(std::size_t j, std::size_t k, const conventions& conv) {
-  // Column-major storage and row vectors each transpose; both together cancel.
-  const bool transposed = (conv.storage == storage_order::column_major) != (conv.vectors == vector_side::row);
-  if (!transposed) return j;
-  if (k == 4) return ((j & 3) << 2) | (j >> 2);  // the common case without a division
-  return (j % k) * k + j / k;
 }
 
 // bits_of_error for the small ulp counts that dominate, looked up (the same values).
@@ -128,18 +156,12 @@ void grade_output(output_grade& g, double got_d, bool defined, F ref) {
 struct references {
   std::array<double, 16> value;  // set where defined
   std::array<bool, 16> defined;  // set for every output
-  bool all_defined = true;
+  bool all_defined = true;       // the exact outputs exist as a whole
+  bool any_undefined = false;    // some output does not exist: the problem has no full answer
   std::optional<point_class> cls;
   std::optional<std::size_t> pivot;
+  std::optional<double> scale;
 };
-
-// A homogeneous result, and a routine that normalises the plane first when the outputs are
-// not invariant under scaling P (normalising multiplies them by the irrational |n|^-degree),
-// is graded up to scale.
-bool graded_up_to_scale(const test_case& c, const conventions& conv) {
-  const detail::operation_spec& spec = detail::spec_of(c.op);
-  return spec.signature.matrix_size && (conv.homogeneous || (conv.normalises_plane && spec.symmetries.plane_degree > 0));
-}
 
 template <class N, class F>
 references exact_references(const test_case& c, const conventions& conv, const double* got) {
@@ -147,37 +169,30 @@ references exact_references(const test_case& c, const conventions& conv, const d
   const exact_outputs<N> e = exact_outputs_of<N>(c, conv);
   r.all_defined = e.defined;
   r.cls = e.cls;
-  const auto& sig = signature(c.op);
-  const std::size_t n = sig.output_count;
+  const detail::operation_spec& spec = detail::spec_of(c.op);
+  const std::size_t n = spec.signature.output_count;
 
   std::array<N, 16> ref;
   std::array<bool, 16> defined;
   defined.fill(e.defined);
   for (std::size_t j = 0; j < n; ++j) {
-    const std::size_t i = sig.matrix_size ? canonical_index(j, sig.matrix_size, conv) : j;
+    const std::size_t i = detail::canonical_index(j, spec.signature.matrix_size, conv);
     ref[j] = e.values[i];
     if (!e.entry_undefined.empty() && e.entry_undefined[i]) defined[j] = false;
+    r.any_undefined = r.any_undefined || !defined[j];
   }
-  if (graded_up_to_scale(c, conv) && e.defined) {
-    // Pivot: the defined entry of largest exact magnitude, the first one on ties.
-    std::size_t k = 0;
-    while (k + 1 < n && !defined[k]) ++k;
-    N best = abs_n(ref[k]);
-    for (std::size_t j = k + 1; j < n; ++j) {
-      if (!defined[j]) continue;
-      N a = abs_n(ref[j]);
-      if (sign_n(N(a - best)) > 0) { best = a; k = j; }
-    }
-    r.pivot = k;
-    // λ = got[k] / exact[k]; without a usable got[k] the scale stays 1 and the grade shows it.
-    if (std::isfinite(got[k]) && got[k] != 0 && sign_n(ref[k]) != 0) {
-      const N lambda = from_double<N>(got[k]) / ref[k];
-      for (std::size_t j = 0; j < n; ++j) ref[j] = lambda * ref[j];
+  if (detail::graded_up_to_scale(spec, conv) && e.defined) {
+    std::size_t pivot = 0;
+    const std::optional<N> lambda = detail::choose_scale<N, F>(ref, defined, n, got, pivot);
+    if (lambda) {
+      r.pivot = pivot;
+      for (std::size_t j = 0; j < n; ++j) ref[j] = *lambda * ref[j];
+      r.scale = static_cast<double>(round_exact<F>(*lambda));
     }
   }
   for (std::size_t j = 0; j < n; ++j) {
     r.defined[j] = defined[j];
-    if (defined[j]) r.value[j] = static_cast<double>(round_exact<F>(ref[j]));
+    r.value[j] = defined[j] ? static_cast<double>(round_exact<F>(ref[j])) : std::numeric_limits<double>::quiet_NaN();
   }
   return r;
 }
@@ -188,6 +203,7 @@ void grade_outputs(case_grade& g, const test_case& c, std::size_t n, const doubl
   g.id = c.id;
   g.cls = c.cls;
   g.scale_pivot = r.pivot;
+  g.scale = r.scale;
   g.outputs.resize(n);
   std::optional<std::size_t> first_bad;
   std::uint64_t max_ulps = 0;  // kept in registers, stored once
@@ -232,11 +248,96 @@ void grade_outputs(case_grade& g, const test_case& c, std::size_t n, const doubl
   g.max_bits = g.max_ulps ? bits_of(g.max_ulps) : 0.0;
 }
 
+// The outputs equal the declared sentinel (in canonical order; zero and identity read the same
+// in every storage order).
+bool is_sentinel(const detail::operation_spec& spec, const conventions& conv, const double* got, std::size_t n) {
+  if (conv.sentinel == sentinel_kind::none || !spec.sentinel_outputs) return false;
+  std::array<double, 16> s{};
+  if (!spec.sentinel_outputs(conv.sentinel, s.data())) return false;
+  for (std::size_t j = 0; j < n; ++j)
+    if (!(got[j] == s[detail::canonical_index(j, spec.signature.matrix_size, conv)])) return false;
+  return true;
+}
+
+// The verdict of every output and of the case (grade.h, docs/verdicts.md). What the ulps and the
+// relative error decide is decided here; the rest waits for the derivatives.
+template <class F>
+void assign_verdicts(case_grade& g, const test_case& c, const conventions& conv, const double* got,
+                     const references& r, std::size_t n, oracle_mode mode) {
+  const detail::operation_spec& spec = detail::spec_of(c.op);
+  bool all_nonfinite = true, all_exact = true;
+  for (std::size_t j = 0; j < n; ++j) {
+    all_nonfinite = all_nonfinite && !std::isfinite(got[j]);
+    all_exact = all_exact && r.defined[j] && g.outputs[j].ulps == 0 && !g.outputs[j].nonfinite &&
+                (std::isfinite(got[j]) || got[j] == r.value[j]);
+  }
+  const bool sentinel = !all_exact && is_sentinel(spec, conv, got, n);
+  if (r.any_undefined && (all_nonfinite || sentinel)) {
+    // A problem without (a full) answer, rejected as a whole: the correct answer.
+    g.rejected = true;
+    g.nonfinite = g.garbage = 0;
+    for (std::size_t j = 0; j < n; ++j) {
+      output_grade& o = g.outputs[j];
+      o.nonfinite = o.garbage = false;
+      o.ulps = 0;
+      o.bits = o.relative = 0;
+      o.v = verdict::exact;
+    }
+    g.max_ulps = 0;
+    g.max_bits = 0;
+    g.worst_output = 0;
+    g.v = verdict::exact;
+    g.verdict_output = 0;
+    return;
+  }
+  detail::pending_outputs pending;
+  g.rejected = sentinel;  // a sentinel for a problem that has an answer
+  for (std::size_t j = 0; j < n; ++j) {
+    output_grade& o = g.outputs[j];
+    if (!r.defined[j]) {
+      o.v = o.garbage ? verdict::garbage : verdict::exact;
+    } else if (sentinel) {
+      if (o.ulps == 0 && !o.nonfinite && std::isfinite(got[j])) o.v = verdict::exact;
+      else pending.add(j, detail::pending_kind::rejection);
+    } else if (!std::isfinite(got[j])) {
+      if (o.nonfinite) pending.add(j, detail::pending_kind::nonfinite);
+      else o.v = verdict::exact;  // an overflow to the same infinity
+    } else if (o.ulps == 0) {
+      o.v = verdict::exact;
+    } else if (o.ulps == 1) {
+      o.v = verdict::faithful;
+    } else if (std::isfinite(o.reference) && o.reference != 0 &&
+               detail::certainly_stable(got[j], o.reference, c.type, spec.stable_constant)) {
+      o.v = verdict::stable;
+    } else {
+      pending.add(j, detail::pending_kind::finite);
+    }
+  }
+  if (pending.count) {
+    // The kernels read the references in canonical order: the implementation's order unless
+    // its layout transposes.
+    std::array<double, 16> canonical;
+    const std::size_t k = spec.signature.matrix_size;
+    const bool transposed = k && detail::canonical_index(1, k, conv) != 1;
+    if (transposed)
+      for (std::size_t j = 0; j < n; ++j) canonical[detail::canonical_index(j, k, conv)] = r.value[j];
+    detail::decide_pending(g, c, conv, got, pending, mode, transposed ? canonical.data() : r.value.data(), r.cls);
+  }
+  g.v = verdict::exact;
+  g.verdict_output = 0;
+  for (std::size_t j = 0; j < n; ++j)
+    if (g.outputs[j].v > g.v) {
+      g.v = g.outputs[j].v;
+      g.verdict_output = j;
+    }
+}
+
 // The grade of a case from its references, and what its outputs mean beyond their values.
 template <class F>
 void finish_grade(case_grade& g, const test_case& c, const conventions& conv, const double* got,
-                  const references& r, std::size_t n, oracle_mode mode) {
+                  const references& r, std::size_t n, oracle_mode mode, grade_depth depth) {
   grade_outputs<F>(g, c, n, got, r);
+  if (depth == grade_depth::verdicts) assign_verdicts<F>(g, c, conv, got, r, n, mode);
   const detail::operation_spec& spec = detail::spec_of(c.op);
   if (spec.grade_meaning) {
     g.exact_class = r.cls;
@@ -245,57 +346,60 @@ void finish_grade(case_grade& g, const test_case& c, const conventions& conv, co
 }
 
 template <class N, class F>
-case_grade grade_with(const test_case& c, const conventions& conv, const double* got, oracle_mode mode) {
+case_grade grade_with(const test_case& c, const conventions& conv, const double* got, oracle_mode mode,
+                      grade_depth depth) {
   const references r = exact_references<N, F>(c, conv, got);
   case_grade g;
-  finish_grade<F>(g, c, conv, got, r, signature(c.op).output_count, mode);
+  finish_grade<F>(g, c, conv, got, r, signature(c.op).output_count, mode, depth);
   return g;
 }
 
 // The operation's dedicated kernels (oracle_fast.h); false when it has none for this type, the
 // case is graded up to scale, or they cannot decide it.
 template <class F>
-bool grade_fast(const test_case& c, const conventions& conv, const double* got, case_grade& out) {
+bool grade_fast(const test_case& c, const conventions& conv, const double* got, case_grade& out, grade_depth depth) {
   const detail::operation_spec& spec = detail::spec_of(c.op);
   const auto kernel = std::is_same_v<F, float> ? spec.fast_f32 : spec.fast_f64;
-  if (!kernel || graded_up_to_scale(c, conv)) return false;
+  if (!kernel || detail::graded_up_to_scale(spec, conv)) return false;
   detail::fast_reference fast;
   if (!kernel(c.inputs.data(), conv, fast)) return false;
   const std::size_t k = spec.signature.matrix_size;
   references r;
   r.all_defined = fast.defined;
+  r.any_undefined = !fast.defined;
   r.cls = fast.cls;
   for (std::size_t j = 0; j < fast.count; ++j) {
-    const std::size_t i = k ? canonical_index(j, k, conv) : j;
-    r.value[j] = fast.value[i];
+    const std::size_t i = detail::canonical_index(j, k, conv);
     r.defined[j] = fast.defined && !((fast.undefined >> i) & 1);
+    r.value[j] = r.defined[j] ? fast.value[i] : std::numeric_limits<double>::quiet_NaN();
+    r.any_undefined = r.any_undefined || !r.defined[j];
   }
-  finish_grade<F>(out, c, conv, got, r, fast.count, oracle_mode::filtered);
+  finish_grade<F>(out, c, conv, got, r, fast.count, oracle_mode::filtered, depth);
   return true;
 }
 
 }  // namespace
 
 case_grade grade_case(const test_case& c, const conventions& conv, const double* outputs,
-                      oracle_mode mode, oracle_counters* counters) {
+                      oracle_mode mode, oracle_counters* counters, grade_depth depth) {
   if (mode == oracle_mode::filtered) {
     case_grade fast;
-    if (c.type == scalar_type::f32 ? grade_fast<float>(c, conv, outputs, fast)
-                                   : grade_fast<double>(c, conv, outputs, fast)) {
+    if (c.type == scalar_type::f32 ? grade_fast<float>(c, conv, outputs, fast, depth)
+                                   : grade_fast<double>(c, conv, outputs, fast, depth)) {
       if (counters) ++counters->decided_by_intervals;
       return fast;
     }
     try {
-      case_grade g = c.type == scalar_type::f32 ? grade_with<ival32, float>(c, conv, outputs, mode)
-                                                : grade_with<ival64, double>(c, conv, outputs, mode);
+      case_grade g = c.type == scalar_type::f32 ? grade_with<ival32, float>(c, conv, outputs, mode, depth)
+                                                : grade_with<ival64, double>(c, conv, outputs, mode, depth);
       if (counters) ++counters->decided_by_intervals;
       return g;
     } catch (const detail::undecided&) {
       if (counters) ++counters->fell_back_to_rationals;
     }
   }
-  return c.type == scalar_type::f32 ? grade_with<rational, float>(c, conv, outputs, mode)
-                                    : grade_with<rational, double>(c, conv, outputs, mode);
+  return c.type == scalar_type::f32 ? grade_with<rational, float>(c, conv, outputs, mode, depth)
+                                    : grade_with<rational, double>(c, conv, outputs, mode, depth);
 }
 
 }  // namespace shadowproof

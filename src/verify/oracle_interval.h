@@ -83,6 +83,13 @@ class interval {
   friend std::ostream& operator<<(std::ostream& out, const interval& a) {
     return out << a.m_ << " ± " << a.e_;
   }
+  // An enclosure of |x| for every point x of a, decided or not: the absolute values of the
+  // derivatives that the conditioning sums need even where a derivative's sign is unknown.
+  friend interval magnitude(const interval& a) {
+    if (std::fabs(a.m_) > a.e_) return a.m_ < 0 ? -a : a;
+    const B top = up(std::fabs(a.m_) + a.e_);  // |x| ∈ [0, top]
+    return interval(top / 2, up(top / 2));
+  }
 
   static B unit() { return std::numeric_limits<B>::epsilon() / 2; }
   // Pushes a bound computed in round-to-nearest outwards past its own rounding error.
@@ -165,6 +172,19 @@ F round_to(const interval<B>& x) {
   }
   if (!(a == b)) throw undecided{};
   return a == 0 ? F(0) : a;  // the exact oracle rounds 0 to +0
+}
+
+/// Sign of x (−1, 0, +1) in `s` when decided; false otherwise (never throws).
+template <class B>
+bool decided_sign(const interval<B>& x, int& s) {
+  if (std::isnan(x.mid()) || std::isnan(x.radius())) return false;
+  if (x.is_point()) {
+    s = x.mid() > 0 ? 1 : (x.mid() < 0 ? -1 : 0);
+    return true;
+  }
+  if (!(std::fabs(x.mid()) > x.radius())) return false;
+  s = x.mid() > 0 ? 1 : -1;
+  return true;
 }
 
 /// Sign of x (−1, 0, +1) when decided.

@@ -1,6 +1,7 @@
 // The any-language protocol: writing and reading case lines, reading output lines.
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <sstream>
 
@@ -161,6 +162,8 @@ const std::vector<convention_spelling>& spellings() {
       {"matrix3-input", {"packed", "padded", "mat4"}},
       {"homogeneous", {"false", "true"}},
       {"symmetric", {"false", "true"}},
+      {"sentinel", {"none", "zero", "identity"}},
+      {"clamps-behind-receiver", {"false", "true"}},
   };
   return s;
 }
@@ -170,7 +173,7 @@ std::vector<int> convention_values(const conventions& c) {
   return {static_cast<int>(c.storage), static_cast<int>(c.vectors), static_cast<int>(c.light),
           static_cast<int>(c.depth),   static_cast<int>(c.hand),    static_cast<int>(c.angle),
           static_cast<int>(c.plane),   static_cast<int>(c.matrix3), static_cast<int>(c.matrix3_input), c.homogeneous ? 1 : 0,
-          c.symmetric_view ? 1 : 0};
+          c.symmetric_view ? 1 : 0, static_cast<int>(c.sentinel), c.clamps_behind_receiver ? 1 : 0};
 }
 
 }  // namespace
@@ -199,7 +202,9 @@ void set_convention(conventions& conv, std::string_view name, std::string_view v
       else if (name == "matrix3") conv.matrix3 = static_cast<matrix3_layout>(k);
       else if (name == "matrix3-input") conv.matrix3_input = static_cast<matrix3_layout>(k);
       else if (name == "homogeneous") conv.homogeneous = k != 0;
-      else conv.symmetric_view = k != 0;
+      else if (name == "symmetric") conv.symmetric_view = k != 0;
+      else if (name == "sentinel") conv.sentinel = static_cast<sentinel_kind>(k);
+      else conv.clamps_behind_receiver = k != 0;
       return;
     }
     std::string expected;
@@ -239,8 +244,14 @@ test_case parse_case_line(std::string_view line, std::size_t line_number, conven
   c.type = *type;
   if (j.contains("class")) {
     const auto cls = j["class"].is_string() ? input_class_from_string(j["class"].get<std::string>()) : std::nullopt;
-    if (!cls) fail("\"class\" must be regular, near-degenerate or degenerate");
+    if (!cls) fail("\"class\" must be regular, near-degenerate, degenerate or range");
     c.cls = *cls;
+  }
+  if (j.contains("closeness")) {
+    const auto& k = j["closeness"];
+    if (k.is_number()) c.closeness = k.get<double>();
+    else if (k.is_string() && k.get<std::string>() == "-inf") c.closeness = -std::numeric_limits<double>::infinity();
+    else fail("\"closeness\" must be a number or \"-inf\"");
   }
   if (j.contains("conventions")) {
     if (!j["conventions"].is_object()) fail("\"conventions\" must be an object");
@@ -335,6 +346,13 @@ std::string case_json_line(const test_case& c, const conventions& declared) {
   std::ostringstream out;
   out << "{\"id\": " << c.id << ", \"op\": \"" << to_string(c.op) << "\", \"type\": \""
       << to_string(c.type) << "\", \"class\": \"" << to_string(c.cls) << "\"";
+  if (std::isinf(c.closeness) && c.closeness < 0) {
+    out << ", \"closeness\": \"-inf\"";
+  } else if (std::isfinite(c.closeness)) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.2f", c.closeness);
+    out << ", \"closeness\": " << text;
+  }
   const auto conv = declared_conventions(declared);
   if (!conv.empty()) {
     out << ", \"conventions\": {";

@@ -2,6 +2,9 @@
 /// Conventions an implementation declares: storage, vector side, light sign, depth range, and
 /// the input restrictions it needs. The grader maps each to the canonical form exactly, so a
 /// convention is never reported as an error and never hides one.
+#include <optional>
+#include <string_view>
+
 #include "shadowproof/constructions/handedness.h"
 #include "shadowproof/constructions/irrational.h"
 #include "shadowproof/constructions/project.h"
@@ -15,6 +18,17 @@ enum class vector_side { column, row };
 /// Sign of a directional light's (x, y, z): the library's canonical form points towards the
 /// light; `along_rays` means the vector is the direction the light travels (the negation).
 enum class light_sign { towards_light, along_rays };
+
+/// What an implementation returns, by its documentation, when the problem has no answer (a
+/// singular matrix, a flat view volume, a point whose shadow does not exist). NaN or ±Inf in
+/// every output is always accepted as a rejection; a sentinel is accepted besides when declared.
+///   zero: every output 0 (the zero matrix, the origin);
+///   identity: the identity matrix (matrices only), as Qt's QMatrix4x4::inverted returns it.
+enum class sentinel_kind { none, zero, identity };
+/// "none", "zero", "identity".
+std::string_view to_string(sentinel_kind s);
+/// Inverse of to_string; nothing for an unknown name.
+std::optional<sentinel_kind> sentinel_from_string(std::string_view name);
 
 /// How a plane's fourth number is meant: (a, b, c, d) is a x + b y + c z + d = 0 (`plus_d`, the
 /// canonical form) or a x + b y + c z = d (`equals_d`, e.g. three.js ShadowMesh's reading).
@@ -54,6 +68,8 @@ struct conventions {
   /// ortho / frustum: only symmetric volumes (l = −r, b = −t), for builders taking a width
   /// and a height; cases are generated accordingly.
   bool symmetric_view = false;
+  /// The documented answer for a problem without one, accepted besides NaN/±Inf.
+  sentinel_kind sentinel = sentinel_kind::none;
   /// Projections and look-at cameras: eye space looking down −z (right) or +z (left);
   /// left-handed projections are M · diag(1, 1, −1, 1) (constructions/handedness.h).
   handedness hand = handedness::right;

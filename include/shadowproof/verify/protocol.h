@@ -14,12 +14,14 @@
 namespace shadowproof {
 
 /// Writes the case as the JSON object of the case-file protocol (one line, no newline):
-/// {"id": 0, "op": "shadow-matrix", "type": "f32", "class": "regular", "plane": [hex...],
-///  "light": [hex...], "exact": {"plane": [decimal...], ...}, "numbers": {"plane": [JSON
-///  numbers...], ...}}. Each input three times: bit-exact hex floats, exact decimals, and JSON
-/// numbers in the shortest form that reads back as the same double (any JSON library that
-/// rounds correctly to double, JavaScript's JSON.parse included, gets the input exactly; an
-/// f32 input is that float's exact double value). docs/protocol.md describes the protocol.
+/// {"id": 0, "op": "shadow-matrix", "type": "f32", "class": "regular", "closeness": -1.25,
+///  "plane": [hex...], "light": [hex...], "exact": {"plane": [decimal...], ...}, "numbers":
+///  {"plane": [JSON numbers...], ...}}; closeness is log2 of the relative distance to the
+/// degeneracy (two decimals, "-inf" exactly on it). Each input three times: bit-exact hex
+/// floats, exact decimals, and JSON numbers in the shortest form that reads back as the same
+/// double (any JSON library that rounds correctly to double, JavaScript's JSON.parse included,
+/// gets the input exactly; an f32 input is that float's exact double value). docs/protocol.md
+/// describes the protocol.
 std::string case_json_line(const test_case& c);
 
 /// The same line for an implementation with `declared` conventions: they are written as a
@@ -34,7 +36,8 @@ std::string case_json_line(const test_case& c, const conventions& declared);
 ///   light: towards-light | along-rays         depth: gl | d3d | reverse-z
 ///   handedness: right | left                   angle: radians | degrees
 ///   plane: n.x+d=0 | n.x=d                     matrix3, matrix3-input: packed | padded | mat4
-///   homogeneous, symmetric: true | false
+///   homogeneous, symmetric, clamps-behind-receiver: true | false
+///   sentinel: none | zero | identity
 std::vector<std::pair<std::string, std::string>> declared_conventions(const conventions& conv);
 
 /// Sets one convention by its protocol name and value (the spellings above). Throws error
@@ -48,7 +51,8 @@ std::size_t output_count(const test_case& c, const conventions& conv);
 /// Exact decimal expansion of a finite double ("0.100000001490116119384765625").
 std::string exact_decimal(double x);
 
-/// Reads one line of a case file (case_json_line's format; "class" and "exact" optional).
+/// Reads one line of a case file (case_json_line's format; "class", "closeness" and "exact"
+/// optional).
 /// Every input must be a hex-float or exact string (or a JSON number) exactly representable
 /// in the case's type. Throws error "protocol.case" naming the line and field otherwise, and
 /// for a plane with a zero normal or an all-zero light.

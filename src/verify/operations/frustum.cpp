@@ -2,6 +2,9 @@
 // glFrustum perspective of the near-plane window [l, r] × [b, t] at distance n, far plane at
 // distance f, onto the canonical volume of the declared depth convention.
 // Classes: as ortho; near ≤ 0 (or far ≤ 0) admits no projection, so every output is undefined.
+// Stable: 2n/(r − l), (r + l)/(r − l), A = (n z_near − f z_far)/(f − n) and
+// B = n f (z_near − z_far)/(f − n) take two or three roundings on their longest path:
+// c = 2 × 3 = 6.
 #include "view_volume.h"
 
 namespace shadowproof::detail {
@@ -31,9 +34,9 @@ operation_spec make() {
   s.signature = make_signature({{"box", 6}}, 16, 4);
   s.generate = box_inputs;
   s.closeness = box_closeness;
-  s.exact_rational = exact<rational>;
-  s.exact_ival32 = exact<ival32>;
-  s.exact_ival64 = exact<ival64>;
+  SHADOWPROOF_EXACT_TEMPLATE(s, exact);
+  s.stable_constant = 6;
+  s.sentinel_outputs = matrix_sentinels;
   s.fast_f32 = fast_frustum_f32;
   s.fast_f64 = fast_frustum_f64;
   s.reproducer = reproducer;

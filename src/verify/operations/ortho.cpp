@@ -1,7 +1,10 @@
 // ortho: box[6] = l, r, b, t, n, f -> orthographic(l, r, b, t, n, f, depth), 16 entries: the
 // box [l, r] × [b, t] × [−f, −n] onto the canonical volume of the declared depth convention.
 // Classes: near-degenerate = one extent a relative 2^-4 … 2^-(p−1) of its position, or
-// far ≫ near; degenerate = l = r, b = t or n = f (those rows' scale and offset undefined).
+// far ≫ near; degenerate = l = r, b = t or n = f (those rows' scale and offset undefined); range
+// = the box scaled so that r − l, f + n overflow or 2/(r − l) leaves the range.
+// Stable: 2/(r − l) and (r + l)/(r − l) take two roundings on their longest path, z_near + A n
+// three (A, then A n): c = 2 × 3 = 6.
 #include "view_volume.h"
 
 namespace shadowproof::detail {
@@ -25,9 +28,9 @@ operation_spec make() {
   s.signature = make_signature({{"box", 6}}, 16, 4);
   s.generate = box_inputs;
   s.closeness = box_closeness;
-  s.exact_rational = exact<rational>;
-  s.exact_ival32 = exact<ival32>;
-  s.exact_ival64 = exact<ival64>;
+  SHADOWPROOF_EXACT_TEMPLATE(s, exact);
+  s.stable_constant = 6;
+  s.sentinel_outputs = matrix_sentinels;
   s.fast_f32 = fast_ortho_f32;
   s.fast_f64 = fast_ortho_f64;
   s.reproducer = reproducer;

@@ -3,8 +3,10 @@
 // and far distances, onto the canonical volume of the declared depth convention:
 //   [ c/aspect 0 0 0; 0 c 0 0; 0 0 A B; 0 0 −1 0 ], A, B as in frustum (project.h).
 // Classes: near-degenerate = far within a relative 2^-4 … 2^-(p−1) of near, or far ≫ near;
-// degenerate = n = f (A and B undefined, the rest defined). c, aspect, n or f ≤ 0 admits no
-// projection: every output is undefined.
+// degenerate = n = f (A and B undefined, the rest defined); range = n and f scaled so that n f
+// over- or underflows. c, aspect, n or f ≤ 0 admits no projection: every output is undefined.
+// Stable: c/aspect takes one rounding, A and B two or three (B = 2 f n r with r = 1/(n − f) takes
+// three): c = 2 × 3 = 6.
 #include <cmath>
 #include <limits>
 
@@ -44,7 +46,7 @@ void generate(case_rng& r, input_class cls, const conventions&, double* x) {
   x[3] = x[2] + positive(r, 0, 6);
   if (cls == input_class::near_degenerate) {
     if (r.raw() & 1) {
-      x[3] = x[2] * std::ldexp(1.0, static_cast<int>(r.integer(10, r.bits() == 24 ? 60 : 400)));  // far ≫ near
+      x[3] = x[2] * std::ldexp(1.0, static_cast<int>(r.integer(4, r.bits() - 1)));  // far ≫ near
     } else {
       const int k = static_cast<int>(r.integer(4, r.bits() - 1));
       x[3] = x[2] + std::ldexp(x[2], -k);  // far a relative 2^-k beyond near
@@ -53,16 +55,25 @@ void generate(case_rng& r, input_class cls, const conventions&, double* x) {
     x[3] = x[2];
   }
   for (int i = 0; i < 4; ++i) x[i] = r.fit(x[i]);
+  if (cls == input_class::range) {
+    // n and f scaled so that 2 f n overflows, or underflows; A does not change, B scales.
+    const int top = top_exponent(x + 2, 2);
+    const int e = (r.raw() & 1) ? max_exponent(r) / 2 - top + static_cast<int>(r.integer(0, 2))
+                                : min_normal_exponent(r) / 2 - top - 2 - static_cast<int>(r.integer(0, 2));
+    if (!scale_exactly(r, x + 2, 2, e)) generate(r, cls, conventions{}, x);  // draw again
+  }
 }
 
-// log2(|f − n| / (|f| + |n|)): the relative depth extent.
+// log2(|f − n| / (|f| + |n|)): the relative depth extent (−inf exactly when f = n).
 double closeness(const double* x) {
+  if (x[3] == x[2]) return -std::numeric_limits<double>::infinity();
   const long double extent = std::fabs(static_cast<long double>(x[3]) - x[2]);
-  if (extent == 0) return -std::numeric_limits<double>::infinity();
   return static_cast<double>(std::log2(extent / (std::fabs(static_cast<long double>(x[2])) + std::fabs(static_cast<long double>(x[3])))));
 }
 
 std::string reproducer(const test_case& c, const conventions& conv) {
+  const double* x = c.inputs.data();
+  if (!(x[0] > 0 && x[1] > 0 && x[2] > 0 && x[3] > 0) || x[2] == x[3]) return exact_command(c, conv);
   return "shadowproof project perspective --cot-half-fovy " + hex_string(c.inputs[0]) + " --aspect " +
          hex_string(c.inputs[1]) + " --near " + hex_string(c.inputs[2]) + " --far " + hex_string(c.inputs[3]) +
          " --convention " + std::string(to_string(conv.depth)) + handedness_flag(conv);
@@ -76,9 +87,9 @@ operation_spec make() {
   s.signature = make_signature({{"camera", 4}}, 16, 4);
   s.generate = generate;
   s.closeness = closeness;
-  s.exact_rational = exact<rational>;
-  s.exact_ival32 = exact<ival32>;
-  s.exact_ival64 = exact<ival64>;
+  SHADOWPROOF_EXACT_TEMPLATE(s, exact);
+  s.stable_constant = 6;
+  s.sentinel_outputs = matrix_sentinels;
   s.fast_f32 = fast_perspective_f32;
   s.fast_f64 = fast_perspective_f64;
   s.reproducer = reproducer;

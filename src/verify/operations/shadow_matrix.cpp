@@ -1,7 +1,11 @@
 // shadow-matrix: plane P[4], light L[4] -> the planar shadow matrix M = (P·L) I − L Pᵀ,
 // 16 entries (row-major, column vectors).
-// Classes: near-degenerate = light within a relative 2^-4 … 2^-(p+8) of parallel to
-// (directional) or of lying on (point) the receiver; degenerate = exactly so, P·L = 0.
+// Classes: near-degenerate = light within a relative 2^-4 … 2^-(p−1) of parallel to
+// (directional) or of lying on (point) the receiver; degenerate = exactly so, P·L = 0; range =
+// P and L scaled so that their products over- or underflow.
+// Stable: an entry is −L_i P_j (one rounding) or Σ_{k≠i} P_k L_k (three products, two sums: three
+// roundings on its longest path), so c = 2 × 3 = 6 (docs/verdicts.md); the evaluation
+// (P·L) − L_i P_i, which rounds P·L first, is not stable where L_i P_i dominates the entry.
 #include "shadowproof/constructions/shadow.h"
 
 #include "../operation_table.h"
@@ -22,7 +26,9 @@ void generate(case_rng& r, input_class cls, const conventions& requirements, dou
 
 double closeness(const double* in) { return log2_relative_dot(in, in + 4, 4); }
 
-std::string reproducer(const test_case& c, const conventions&) {
+std::string reproducer(const test_case& c, const conventions& conv) {
+  // A directional light given along its rays negates the matrix `shadow` prints.
+  if (conv.light == light_sign::along_rays && c.inputs[7] == 0) return exact_command(c, conv);
   return "shadowproof shadow --plane " + hex_list(c, 0, 4) + " --light " + hex_list(c, 4, 4);
 }
 
@@ -39,9 +45,10 @@ operation_spec make() {
   s.signature = make_signature({{"plane", 4}, {"light", 4}}, 16, 4);
   s.generate = generate;
   s.closeness = closeness;
-  s.exact_rational = exact<rational>;
-  s.exact_ival32 = exact<ival32>;
-  s.exact_ival64 = exact<ival64>;
+  SHADOWPROOF_EXACT_TEMPLATE(s, exact);
+  s.sensitivity = shadow_matrix_sensitivity;
+  s.stable_constant = 6;
+  s.sentinel_outputs = matrix_sentinels;
   s.fast_f32 = fast_shadow_matrix_f32;
   s.fast_f64 = fast_shadow_matrix_f64;
   s.reproducer = reproducer;

@@ -1,13 +1,20 @@
 // shadow-point: plane P[4], light L[4], point V[3] -> the affine shadow of V, the image of
 // (V, 1) under M = (P·L) I − L Pᵀ divided by its w, 3 entries.
 // Classes: near-degenerate = light nearly parallel to / on the receiver, or the point nearly
-// on the receiver or nearly level with a point light (relative 2^-4 … 2^-(p+8));
-// degenerate = exactly so (then the image is at infinity, or V itself, or does not exist).
+// on the receiver or nearly level with a point light (relative 2^-4 … 2^-(p−1));
+// degenerate = exactly so (then the image is at infinity, or V itself, or does not exist);
+// range = P and L scaled (the image does not move) so that P·L and P·V over- or underflow.
+// Stable: (s V − t L) / (s − w t) with s = P·L, t = P·V + d: s and t take four products and three
+// sums (four roundings on the longest path of a dot product of four terms), then s·V_i, the
+// difference and the quotient add three: seven roundings, c = 2 × 7 = 14.
 // Beyond the values, the grade says where the float image lies on the line through the light
 // and V (image_class), and whether that contradicts the exact class of V.
 #include "shadowproof/constructions/shadow.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
 
 #include "../operation_table.h"
 
@@ -21,11 +28,12 @@ exact_outputs<N> exact(const double* in, const conventions& conv) {
   const light<N> L = canonical_light<N>(in + 4, conv);
   const vec4<N> V = vec_from<N>(in + 8, 3, N(1));
   r.cls = classify_point(P, L, V);
-  // A point on the receiver is its own shadow, also when the light is parallel to or on the
-  // receiver (then the whole line from V to the light lies in it and the matrix's image is the
-  // zero vector, but V is still where the line meets the receiver).
-  const bool own_image = *r.cls == point_class::on_receiver || *r.cls == point_class::line_in_plane;
-  if (own_image || (conv.clamps_behind_receiver && *r.cls == point_class::behind_receiver)) {
+  // A point on the receiver is its own shadow: the formula below gives (s V)/s = V, with the
+  // derivatives of the shadow around it. When the light is parallel to or on the receiver too
+  // (line_in_plane), the whole line from V to the light lies in it and the formula gives 0/0,
+  // but V is still where the line meets the receiver.
+  if (*r.cls == point_class::line_in_plane ||
+      (conv.clamps_behind_receiver && *r.cls == point_class::behind_receiver)) {
     for (std::size_t i = 0; i < 3; ++i) r.values.push_back(V[i]);
     return r;
   }
@@ -73,18 +81,10 @@ image_class classify_image(const double* in, const conventions& conv, const doub
   return same ? image_class::on_receiver : image_class::other;
 }
 
-// The image class a correct result must have, for the exact classes where the side matters.
-// A point exactly on the receiver (on_receiver, and line_in_plane, whose image is also the
-// point itself) is left to the ulps metric: an image one ulp away from it would otherwise
-// count as a flipped side.
-std::optional<image_class> comparable(point_class e, const conventions& conv) {
-  switch (e) {
-    case point_class::shadow: return image_class::shadow;
-    case point_class::behind_receiver:
-      return conv.clamps_behind_receiver ? image_class::on_receiver : image_class::behind_receiver;
-    case point_class::beyond_light: return image_class::beyond_light;
-    default: return std::nullopt;
-  }
+// The sides of the receiver and the light an image can be on; the other image classes (on the
+// receiver, at the light, off the line) are left to the values.
+bool is_side(image_class k) {
+  return k == image_class::shadow || k == image_class::behind_receiver || k == image_class::beyond_light;
 }
 
 // P·(G, 1) for the float image G, correctly rounded to double, with number type N.
@@ -122,13 +122,31 @@ double plane_value(const test_case& c, const double* got, oracle_mode mode) {
   }
 }
 
-void grade_meaning(case_grade& g, const test_case& c, const conventions& conv, const double* got, bool exact_defined,
+// Misclassified: the image and the correctly rounded exact image lie on different sides. Both
+// classes come from the same classification of a float image, so the correctly rounded answer
+// is never misclassified; an image next to the light or to V whose correct rounding is the light
+// or V itself is left to the values, as is a non-finite image (its own verdict).
+void grade_meaning(case_grade& g, const test_case& c, const conventions& conv, const double* got, bool,
                    oracle_mode mode) {
   const image_class got_class = image_class_of(c, conv, got, mode);
   g.got_class = got_class;
-  if (const auto want = comparable(*g.exact_class, conv)) g.misclassified = got_class != *want;
-  else if (exact_defined) g.misclassified = got_class == image_class::nonfinite;
   if (got_class != image_class::nonfinite) g.plane_value = plane_value(c, got, mode);
+  if (!is_side(got_class) || g.rejected) return;
+  std::array<double, 3> reference{};
+  bool same = true;
+  for (std::size_t i = 0; i < 3; ++i) {
+    const output_grade& o = g.outputs[i];
+    if (!o.exact_defined || !std::isfinite(o.reference)) return;
+    reference[i] = o.reference;
+    same = same && o.reference == got[i];
+  }
+  if (same) {
+    g.reference_class = got_class;
+    return;
+  }
+  const image_class want = image_class_of(c, conv, reference.data(), mode);
+  g.reference_class = want;
+  g.misclassified = is_side(want) && want != got_class;
 }
 
 void point_inputs(case_rng& r, input_class cls, const conventions& req, double* in) {
@@ -137,7 +155,7 @@ void point_inputs(case_rng& r, input_class cls, const conventions& req, double* 
   double* l = in + 4;
   double* v = in + 8;
   const int flavour = static_cast<int>(r.integer(0, 2));
-  if (cls == input_class::regular) {
+  if (cls == input_class::regular || cls == input_class::range) {
     shadow_inputs(r, cls, req, p, l);
     for (int i = 0; i < 3; ++i) v[i] = r.value();
     return;
@@ -195,11 +213,42 @@ void generate(case_rng& r, input_class cls, const conventions& requirements, dou
   }
 }
 
-double closeness(const double* in) {
-  return std::min(log2_relative_dot(in, in + 4, 4), log2_relative_dot(in, in + 8, 3));
+// For a point light, how close the line from the light through V is to parallel with the
+// receiver: log2(|n·(l − wV)| / (|n| |l − wV|)), the image's w relative to its terms (−inf when
+// it is exactly 0 or V is the light, whose image is the zero vector).
+double line_closeness(const double* in) {
+  if (in[7] == 0) return std::numeric_limits<double>::infinity();
+  long double along[3], w = 0, size = 0, normal = 0;
+  for (std::size_t i = 0; i < 3; ++i) {
+    along[i] = static_cast<long double>(in[4 + i]) - static_cast<long double>(in[7]) * in[8 + i];
+    w += static_cast<long double>(in[i]) * along[i];
+    size += along[i] * along[i];
+    normal += static_cast<long double>(in[i]) * in[i];
+  }
+  const long double scale = std::sqrt(size * normal);
+  if (std::fabs(w) >= 0x1p-40L * scale && scale > 0) return static_cast<double>(std::log2(std::fabs(w) / scale));
+  // Near 0 (or V near the light): decide exactly.
+  rational exact_along[3], exact_w = 0;
+  bool at_light = true;
+  for (std::size_t i = 0; i < 3; ++i) {
+    exact_along[i] = exact_value(in[4 + i]) - exact_value(in[7]) * exact_value(in[8 + i]);
+    at_light = at_light && sgn(exact_along[i]) == 0;
+    exact_w += exact_value(in[i]) * exact_along[i];
+  }
+  if (at_light || sgn(exact_w) == 0) return -std::numeric_limits<double>::infinity();
+  long double exact_size = 0;
+  for (const rational& a : exact_along) exact_size += static_cast<long double>(to_nearest_double(a)) * to_nearest_double(a);
+  return static_cast<double>(std::log2(std::fabs(static_cast<long double>(to_nearest_double(exact_w))) /
+                                       std::sqrt(exact_size * normal)));
 }
 
-std::string reproducer(const test_case& c, const conventions&) {
+double closeness(const double* in) {
+  return std::min({log2_relative_dot(in, in + 4, 4), log2_relative_dot(in, in + 8, 3), line_closeness(in)});
+}
+
+std::string reproducer(const test_case& c, const conventions& conv) {
+  // `shadow` knows neither a light given along its rays (the image is the same) nor clamping.
+  if (conv.clamps_behind_receiver) return exact_command(c, conv);
   return "shadowproof shadow --plane " + hex_list(c, 0, 4) + " --light " + hex_list(c, 4, 4) + " --point " +
          hex_list(c, 8, 3);
 }
@@ -218,9 +267,10 @@ operation_spec make() {
   s.signature = make_signature({{"plane", 4}, {"light", 4}, {"point", 3}}, 3, 0);
   s.generate = generate;
   s.closeness = closeness;
-  s.exact_rational = exact<rational>;
-  s.exact_ival32 = exact<ival32>;
-  s.exact_ival64 = exact<ival64>;
+  SHADOWPROOF_EXACT_TEMPLATE(s, exact);
+  s.sensitivity = shadow_point_sensitivity;
+  s.stable_constant = 14;
+  s.sentinel_outputs = point_sentinels;
   s.fast_f32 = fast_shadow_point_f32;
   s.fast_f64 = fast_shadow_point_f64;
   s.grade_meaning = grade_meaning;

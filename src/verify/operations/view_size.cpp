@@ -5,6 +5,7 @@
 // MatrixOrthoLH and MatrixPerspectiveLH, Irrlicht's buildProjectionMatrixOrtho*):
 //   ortho:       [2/w 0 0 0; 0 2/h 0 0; 0 0 A B; 0 0 0 1]
 //   perspective: [2n/w 0 0 0; 0 2n/h 0 0; 0 0 A B; 0 0 −1 0]   (A, B as in project.h)
+// Stable: 2/w (2n/w) one or two roundings, A and B as ortho and frustum: c = 2 × 3 = 6.
 // Classes: near-degenerate = far within a relative 2^-k of near, or far ≫ near; degenerate =
 // w = 0, h = 0 or n = f (only the scale of that axis is undefined: the centre offsets are 0 by
 // construction). A non-positive w or h, or (perspective) n or f ≤ 0, admits no projection.
@@ -75,6 +76,14 @@ double closeness(const double* x) {
 // The box's own reproducer: l = −w/2 … t = h/2, exact halves written as hex floats.
 template <bool perspective>
 std::string reproducer(const test_case& c, const conventions& conv) {
+  // Inputs `project` rejects (a flat or inverted volume) and halves that would round: the
+  // exact command of the case itself.
+  const double* x = c.inputs.data();
+  const bool proper = x[0] > 0 && x[1] > 0 && x[2] != x[3] && (!perspective || (x[2] > 0 && x[3] > 0)) &&
+                      x[0] / 2 * 2 == x[0] && x[1] / 2 * 2 == x[1] && x[0] / 2 != 0 && x[1] / 2 != 0 &&
+                      std::fabs(x[0]) >= std::numeric_limits<double>::min() * 4 &&
+                      std::fabs(x[1]) >= std::numeric_limits<double>::min() * 4;
+  if (!proper) return exact_command(c, conv);
   test_case box = c;
   box.inputs = {-c.inputs[0] / 2, c.inputs[0] / 2, -c.inputs[1] / 2, c.inputs[1] / 2, c.inputs[2], c.inputs[3]};
   return box_reproducer(perspective ? "frustum" : "ortho", box, conv);
@@ -93,6 +102,11 @@ operation_spec make() {
   s.exact_rational = exact<rational, perspective>;
   s.exact_ival32 = exact<ival32, perspective>;
   s.exact_ival64 = exact<ival64, perspective>;
+  s.derivatives_ival32 = exact<dual<ival32>, perspective>;
+  s.derivatives_ival64 = exact<dual<ival64>, perspective>;
+  s.derivatives_rational = exact<dual<rational>, perspective>;
+  s.stable_constant = 6;
+  s.sentinel_outputs = matrix_sentinels;
   s.reproducer = reproducer<perspective>;
   s.invalid = never_invalid;
   return s;

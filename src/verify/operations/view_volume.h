@@ -52,8 +52,13 @@ inline std::string handedness_flag(const conventions& conv) {
   return conv.hand == handedness::left ? " --handedness left" : "";
 }
 
-/// "shadowproof project <kind> --left … --far … --convention <depth>".
+/// "shadowproof project <kind> --left … --far … --convention <depth>"; `shadowproof exact` for
+/// a flat box (and for a frustum with near or far not positive), which `project` rejects.
 inline std::string box_reproducer(const char* kind, const test_case& c, const conventions& conv) {
+  const double* x = c.inputs.data();
+  const bool flat = x[0] == x[1] || x[2] == x[3] || x[4] == x[5];
+  const bool behind = std::string(kind) == "frustum" && !(x[4] > 0 && x[5] > 0);
+  if (flat || behind) return exact_command(c, conv);
   static const char* const flags[] = {"--left", "--right", "--bottom", "--top", "--near", "--far"};
   std::string s = std::string("shadowproof project ") + kind;
   for (std::size_t i = 0; i < 6; ++i) s += std::string(" ") + flags[i] + " " + hex_string(c.inputs[i]);
