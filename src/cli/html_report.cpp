@@ -50,7 +50,7 @@ struct plot_range {
   double xmin = -10, xmax = 2;
 };
 
-// x from the finite closeness values, with a band at the left for the exactly degenerate ones.
+// x from the finite closeness values; the exactly degenerate ones get a band of their own.
 plot_range range_of(const std::vector<html_point>& points) {
   double lo = 0, hi = 0;
   for (const auto& p : points)
@@ -59,47 +59,48 @@ plot_range range_of(const std::vector<html_point>& points) {
       hi = std::max(hi, p.closeness);
     }
   plot_range r;
-  r.xmin = std::floor(lo / 10) * 10 - 10;
+  r.xmin = std::floor(lo / 10) * 10 - 2;
   r.xmax = std::max(hi, 0.0) + 2;
   return r;
 }
 
 // Bits of error of each case against its log2 closeness to degeneracy. Cases falling on the
 // same pixel are drawn once, darker the more there are, so a plot of a million cases stays a
-// few kilobytes.
+// few kilobytes. Cases exactly on the degeneracy sit in a band at the left.
 std::string scatter(const std::vector<html_point>& points, const std::string& colour) {
-  const double W = 560, H = 280, left = 46, right = 12, top = 26, bottom = 40;
+  const double W = 560, H = 280, left = 46, band = 34, right = 12, top = 26, bottom = 40;
   const plot_range r = range_of(points);
   const double ymax = 70;  // 0..64 bits, then the band of non-finite results
-  auto sx = [&](double x) { return left + (x - r.xmin) / (r.xmax - r.xmin) * (W - left - right); };
+  const double x0 = left + band + 6;  // where the finite closeness values start
+  auto sx = [&](double x) { return x0 + (x - r.xmin) / (r.xmax - r.xmin) * (W - x0 - right); };
   auto sy = [&](double y) { return H - bottom - y / ymax * (H - top - bottom); };
   svg_document f(W, H, 10);
   for (int y = 0; y <= 64; y += 16) {
     f.line(left, sy(y), W - right, sy(y), "#e2e4e8");
     f.text(left - 6, sy(y) + 3.5, std::to_string(y), "end");
   }
-  const double step = (r.xmax - r.xmin) > 200 ? 50 : ((r.xmax - r.xmin) > 80 ? 20 : 10);
-  for (double x = std::ceil((r.xmin + 8) / step) * step; x <= r.xmax; x += step) {
-    if (sx(x) - sx(r.xmin + 4) < 34) continue;  // leave room for the band's label
+  const double span = r.xmax - r.xmin;
+  const double step = span > 400 ? 100 : span > 200 ? 50 : span > 80 ? 20 : span > 30 ? 10 : 5;
+  for (double x = std::ceil(r.xmin / step) * step; x <= r.xmax; x += step) {
     f.line(sx(x), top, sx(x), H - bottom, "#eef0f3");
     f.text(sx(x), H - bottom + 13, std::to_string(static_cast<long long>(x)), "middle");
   }
-  f.rect(sx(r.xmin), top, sx(r.xmin + 8) - sx(r.xmin), H - bottom - top, "#f3eef8");
-  f.text(sx(r.xmin + 4), H - bottom + 13, "on it", "middle");
+  f.rect(left, top, band, H - bottom - top, "#f3eef8");
+  f.text(left + band / 2, H - bottom + 13, "on it", "middle");
   f.rect(left, sy(ymax), W - right - left, sy(64) - sy(ymax), "#fbeaea");
   f.text(W - right - 4, sy(66) + 3.5, "NaN / Inf / garbage", "end", "#a33");
   f.text(12, (top + H - bottom) / 2, "bits of error", "middle", "", 0, -90);
-  f.text((left + W - right) / 2, H - 8, "log2 closeness to degeneracy (left: closer)", "middle");
+  f.text((x0 + W - right) / 2, H - 8, "log2 closeness to degeneracy (left: closer)", "middle");
   std::map<std::pair<long, long>, std::size_t> pixels;
   for (const auto& p : points) {
-    const double x = std::isfinite(p.closeness) ? p.closeness : r.xmin + 4;
-    if (std::isnan(x)) continue;
+    if (std::isnan(p.closeness)) continue;
+    const double px = std::isfinite(p.closeness) ? sx(p.closeness) : left + band / 2;
     const double y = p.nonfinite ? 67 : std::min(std::max(p.bits, 0.0), 64.0);
-    ++pixels[{std::lround(sx(x) * 0.5), std::lround(sy(y) * 0.5)}];  // 2-pixel cells
+    ++pixels[{std::lround(px * 0.5), std::lround(sy(y) * 0.5)}];  // 2-pixel cells
   }
   for (const auto& [cell, n] : pixels) {
     const double opacity = std::min(1.0, 0.35 + 0.13 * std::log2(static_cast<double>(n)));
-    f.circle(cell.first * 2.0, cell.second * 2.0, 2.2, colour, opacity);
+    f.circle(static_cast<double>(cell.first) * 2.0, static_cast<double>(cell.second) * 2.0, 2.2, colour, opacity);
   }
   f.text(left, 15, std::to_string(points.size()) + " cases", "start", "#555");
   return f.str();
