@@ -6,6 +6,8 @@
 //   bench/bench_oracle [--table=ROUNDS]   the table (the default, 3 rounds)
 //   bench/bench_oracle --threads=ROUNDS   the batch grader and run_and_grade_in_parallel on 1
 //                                         and 2 threads, wall-clock
+//   bench/bench_oracle --verdicts=ROUNDS  grade_case with verdicts vs values only: what the
+//                                         verdicts cost, per operation, type and class
 //   bench/bench_oracle --agree=N [--impl=NAME]
 //       grades N regular and N near-degenerate cases per implementation with both oracles and
 //       reports any difference (exit 1), the check the unit tests run on a sample.
@@ -203,6 +205,52 @@ int table(std::size_t rounds) {
   return 0;
 }
 
+// What the verdicts cost: grade_case with verdicts against grade_case with values only
+// (grade_depth::values_only: ulps, classes and rejections, every verdict left exact), on the
+// same cases of every operation, type and class in alternating rounds, best round kept.
+int verdicts_cost(std::size_t rounds) {
+  std::printf("load average before: %s; %zu rounds, best kept, 2000 cases per row\n\n", load_average().c_str(), rounds);
+  std::printf("| operation / type / class | implementation | values only | with verdicts | verdicts cost | "
+              "cases beyond faithful |\n|---|---|---|---|---|---|\n");
+  double worst = 0;
+  for (operation op : all_operations())
+    for (scalar_type type : {scalar_type::f32, scalar_type::f64}) {
+      const implementation* impl = nullptr;
+      for (const implementation& i : builtin_implementations())
+        if (i.op == op && i.type == type && i.name.rfind("correctly-rounded", 0) != 0 && (!impl || i.name < impl->name))
+          impl = &i;
+      if (!impl) continue;
+      for (input_class cls : {input_class::regular, input_class::near_degenerate}) {
+        const auto cases = generate_cases(op, type, 2000, 99, cls, impl->conv);
+        std::vector<std::vector<double>> outputs;
+        for (const auto& c : cases) {
+          outputs.emplace_back(signature(op).output_count, 0.0);
+          impl->run(c.inputs.data(), outputs.back().data());
+        }
+        const std::size_t n = cases.size();
+        std::size_t beyond = 0;
+        for (std::size_t i = 0; i < n; ++i) beyond += grade_case(cases[i], impl->conv, outputs[i].data()).v > verdict::faithful;
+        double values = 1e300, verdicts = 1e300;
+        for (std::size_t r = 0; r < rounds; ++r)
+          for (grade_depth depth : {grade_depth::values_only, grade_depth::verdicts})
+            keep_best(depth == grade_depth::values_only ? values : verdicts, n, 2, [&] {
+              for (std::size_t i = 0; i < n; ++i)
+                checksum += grade_case(cases[i], impl->conv, outputs[i].data(), oracle_mode::filtered, nullptr, depth)
+                                .max_ulps;
+            });
+        worst = std::max(worst, verdicts / values);
+        std::printf("| %s / %s / %s | %s | %s | %s | %.2f× | %.1f%% |\n", std::string(to_string(op)).c_str(),
+                    std::string(to_string(type)).c_str(), std::string(to_string(cls)).c_str(), impl->name.c_str(),
+                    rate(1 / values).c_str(), rate(1 / verdicts).c_str(), verdicts / values,
+                    100.0 * static_cast<double>(beyond) / static_cast<double>(n));
+        std::fflush(stdout);
+      }
+    }
+  std::printf("\nworst verdicts cost: %.2f×; load average after: %s; checksum %llu\n", worst, load_average().c_str(),
+              static_cast<unsigned long long>(checksum));
+  return 0;
+}
+
 // 1 and 2 threads on the same large batch of every implementation's cases, wall-clock, the
 // best of `rounds` alternating rounds: the batch grader (grade_batch_in_parallel, running the
 // implementation too) and run_and_grade_in_parallel (grade_case per case).
@@ -326,18 +374,20 @@ void register_benchmarks() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::size_t agree_count = 0, table_rounds = 3, thread_rounds = 0;
+  std::size_t agree_count = 0, table_rounds = 3, thread_rounds = 0, verdict_rounds = 0;
   bool gbench = false;
   std::string only;
   for (int i = 1; i < argc; ++i) {
     if (std::strncmp(argv[i], "--agree=", 8) == 0) agree_count = std::stoul(argv[i] + 8);
     else if (std::strncmp(argv[i], "--table=", 8) == 0) table_rounds = std::stoul(argv[i] + 8);
     else if (std::strncmp(argv[i], "--threads=", 10) == 0) thread_rounds = std::stoul(argv[i] + 10);
+    else if (std::strncmp(argv[i], "--verdicts=", 11) == 0) verdict_rounds = std::stoul(argv[i] + 11);
     else if (std::strncmp(argv[i], "--impl=", 7) == 0) only = argv[i] + 7;
     else if (std::strcmp(argv[i], "--gbench") == 0) gbench = true;
   }
   if (agree_count) return agree(agree_count, only);
   if (thread_rounds) return threads(thread_rounds);
+  if (verdict_rounds) return verdicts_cost(verdict_rounds);
   if (!gbench) return table(table_rounds);
   register_benchmarks();
   benchmark::Initialize(&argc, argv);

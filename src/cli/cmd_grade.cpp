@@ -109,6 +109,7 @@ struct grade_report {
   std::size_t graded = 0;
   operation op = operation::shadow_matrix;
   scalar_type type = scalar_type::f32;
+  bool one_kind = true;  // every case of op and type
   std::string name;
   conventions conv;                                                // the command line's
   grade_summary all;                                               // 5 worst cases
@@ -181,8 +182,10 @@ int print_grade_report(const grade_options& o, const grade_report& r) {
     return failed ? 1 : 0;
   }
   const report_style style{o.wide, 100};
-  std::cout << "Graded " << r.graded << " cases of " << to_string(r.op) << " (" << to_string(r.type)
-            << ") against the exact answer: " << r.name << " is " << to_string(r.all.worst_verdict) << ".\n\n";
+  std::cout << "Graded " << r.graded << " cases of "
+            << (r.one_kind ? std::string(to_string(r.op)) + " (" + std::string(to_string(r.type)) + ")"
+                           : std::string("several operations"))
+            << " against the exact answer: " << r.name << " is " << to_string(r.all.worst_verdict) << ".\n\n";
   std::vector<verdict_row> rows;
   for (const auto& [cls, s] : r.class_rows) rows.push_back({r.name + " " + std::string(to_string(cls)), s});
   rows.push_back({r.name, r.all});
@@ -296,6 +299,7 @@ int run_grade(const grade_options& o) {
   r.graded = grades.size();
   r.op = cases.front().op;
   r.type = cases.front().type;
+  for (const auto& c : cases) r.one_kind = r.one_kind && c.op == r.op && c.type == r.type;
   r.name = o.name.empty() ? std::filesystem::path(o.outputs_path).stem().string() : o.name;
   r.conv = conv;
   r.all = summarize(grades, 5);
@@ -323,6 +327,7 @@ int run_grade(const grade_options& o) {
     m["graded"] = grades.size();
     m["op"] = std::string(to_string(r.op));
     m["type"] = std::string(to_string(r.type));
+    m["one_kind"] = r.one_kind;
     m["summary"] = mergeable_json(summarize_mergeable(grades, 5));
     std::set<std::uint64_t> singled;
     for (const auto& g : singled_out_cases(r.all)) singled.insert(g.id);
@@ -426,6 +431,7 @@ int merge_grade_shards(const std::vector<shard_report>& shards, const merge_opti
       r.op = *op;
       r.type = *type;
       r.graded += payload.at("graded").get<std::size_t>();
+      r.one_kind = payload.at("one_kind").get<bool>();
       const auto& oracle = member(s, s.doc, "oracle");
       r.counters.decided_by_intervals += oracle.at("decided_by_intervals").get<std::uint64_t>();
       r.counters.fell_back_to_rationals += oracle.at("fell_back_to_rationals").get<std::uint64_t>();

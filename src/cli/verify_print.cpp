@@ -67,8 +67,11 @@ std::vector<double> outputs_of(const case_grade& g) {
 std::string verdict_reason(verdict v, const case_grade& g, std::size_t j, const output_conditioning& q,
                            const case_conditioning& cc, scalar_type type) {
   const std::string c = std::to_string(cc.stable_constant) + " u";
-  const std::string eta = "backward error " + scientific(q.backward_error * cc.unit_roundoff) + " (" +
-                          scientific(q.backward_error) + " u)";
+  // Operations without exact derivatives (irrational values) have no printed figures: their
+  // verdicts come from differences of the exact oracle (docs/verdicts.md).
+  const std::string eta = q.defined ? "backward error " + scientific(q.backward_error * cc.unit_roundoff) + " (" +
+                                          scientific(q.backward_error) + " u)"
+                                    : std::string("backward error (from differences of the exact oracle)");
   switch (v) {
     case verdict::exact: return g.rejected ? "a correct rejection of a problem without an answer" : "correctly rounded";
     case verdict::faithful: return "one ulp from correctly rounded";
@@ -95,7 +98,7 @@ std::string output_text(const case_grade& g, const test_case& c, const conventio
   if (!o.exact_defined) return t + ", no exact value";
   t += ", exact " + hex_string(o.reference);
   if (std::isfinite(o.got) && (o.counted() || std::isinf(o.reference)))
-    t += ", " + ulps_text(o.ulps) + " ulps, relative error " + scientific(q.relative_error);
+    t += ", " + ulps_text(o.ulps) + " ulps" + (q.defined ? ", relative error " + scientific(q.relative_error) : "");
   return t;
 }
 

@@ -55,6 +55,10 @@ void normal_matrix(const double* in, double* out) {
 void add_qt(std::vector<implementation>& out) {
   const std::string qt = std::string("Qt ") + QT_VERSION_STR + " QMatrix4x4::";
   conventions c;  // row-major reads, column vectors, right-handed, gl depth
+  // Qt documents the identity where there is no answer: normalMatrix() of a matrix that is not
+  // invertible, and ortho, frustum, perspective and lookAt leave the matrix unchanged for a flat
+  // volume or eye = center.
+  c.sentinel = sentinel_kind::identity;
   conventions degrees = c;
   degrees.angle = angle_unit::degrees;
   out.push_back({"qt-perspective-f32", operation::perspective_fov, scalar_type::f32, degrees,

@@ -3,6 +3,7 @@
 // declines; then the grades, column by column.
 #include "shadowproof/verify/batch.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -99,7 +100,7 @@ void grade_output(const double* got, const double* ref, bool defined, std::uint6
   }
   if (!std::isfinite(got_f)) {  // an overflow to the same infinity is the correctly rounded answer
     const bool same_infinity = std::isinf(ref_f) && got_f == ref_f;
-    flags = same_infinity ? batch_grades::counted : batch_grades::nonfinite_output;
+    flags = same_infinity ? std::uint8_t{0} : batch_grades::nonfinite_output;  // not counted, as output_grade
     return;
   }
   // The exact value overflows the type: count one step past the largest finite value.
@@ -198,47 +199,25 @@ void grade_columns_range(const case_batch& b, const conventions& conv, const bat
   for (std::size_t j = 0; j < n; ++j)
     any_special |= grade(b.outputs.data() + j * count, refs.values.data() + j * count, refs.undefined.data(), j,
                                    first, end, out.ulps.data() + j * count, out.flags.data() + j * count, max_ulps, worst);
-  // The cases with a non-finite, garbage or undefined output: grade_case's rules, case by case
-  // (a non-finite or garbage output is worse than any finite error: the first one is the worst).
+  // The cases with a non-finite, garbage or undefined output: grade_case itself, case by case
+  // (rejections as a whole, undefined entries, overflows to the right infinity).
   if (any_special) {
     for (std::size_t i = first; i < end; ++i) {
       bool special = false;
       for (std::size_t j = 0; j < n; ++j) special |= (out.flags[j * count + i] & 0x80) != 0;
       if (!special) continue;
-      std::uint64_t max = 0;
-      std::size_t worst_output = 0;
-      int first_bad = -1;
-      for (std::size_t j = 0; j < n; ++j) {
-        std::uint64_t& u = out.ulps[j * count + i];
-        std::uint8_t& f = out.flags[j * count + i];
-        if (f & 0x80) grade_output<F>(b.outputs.data() + j * count + i, refs.values.data() + j * count + i,
-                                      !((refs.undefined[i] >> j) & 1), u, f);
-        if ((f & batch_grades::counted) && u > max) {
-          max = u;
-          worst_output = j;
-        }
-        const bool nonfinite = f & batch_grades::nonfinite_output, garbage = f & batch_grades::garbage_output;
-        out.nonfinite[i] = static_cast<std::uint8_t>(out.nonfinite[i] + nonfinite);
-        out.garbage[i] = static_cast<std::uint8_t>(out.garbage[i] + garbage);
-        if ((nonfinite || garbage) && first_bad < 0) first_bad = static_cast<int>(j);
-      }
-      max_ulps[i] = max;
-      worst[i] = static_cast<std::uint8_t>(first_bad >= 0 ? static_cast<std::size_t>(first_bad) : worst_output);
+      load_case(b, i, scratch, got);
+      store_case_grade(grade_case(scratch, conv, got), i, out);
     }
   }
   // What the outputs mean beyond their values (shadow-point): grade_case's own code.
   const detail::operation_spec& spec = detail::spec_of(b.op);
   if (!spec.grade_meaning) return;
-  case_grade g;
+  // Misclassification compares with the class of the correctly rounded image and looks at
+  // rejections, so it takes the whole case's grade.
   for (std::size_t i = first; i < end; ++i) {
     load_case(b, i, scratch, got);
-    g.exact_class = refs.point_class[i] < 0 ? std::nullopt
-                                             : std::optional<point_class>(static_cast<point_class>(refs.point_class[i]));
-    g.got_class.reset();
-    g.misclassified = false;
-    g.plane_value.reset();
-    const bool exact_defined = refs.undefined[i] != (std::uint32_t(1) << n) - 1;
-    spec.grade_meaning(g, scratch, conv, got, exact_defined, oracle_mode::filtered);
+    const case_grade g = grade_case(scratch, conv, got);
     out.misclassified[i] = g.misclassified ? 1 : 0;
     out.got_class[i] = g.got_class ? static_cast<std::int8_t>(*g.got_class) : std::int8_t(-1);
     out.plane_value[i] = g.plane_value ? *g.plane_value : std::numeric_limits<double>::quiet_NaN();
@@ -351,8 +330,12 @@ void compute_references_range(const case_batch& batch, const conventions& conv, 
   const batch_filter filter = use_avx2 ? avx2_batch_filter(batch.op, batch.type) : generic_batch_filter(batch.op, batch.type);
   std::uint8_t* decided = out.decided_by.data() + first;  // 1 = decided, turned into decided_by below
   const bool point = batch.op == operation::shadow_point;
-  filter(in_columns, end - first, conv, {out_columns, decided, point ? out.point_class.data() + first : nullptr});
-  const fast_kernel kernel = f32 ? spec.fast_f32 : spec.fast_f64;
+  // The filters and kernels compute right-handed matrices: a left-handed convention (column 2
+  // negated) goes to the generic oracle, whose exact templates apply it.
+  const bool right_handed = conv.hand == handedness::right;
+  if (right_handed && filter) filter(in_columns, end - first, conv, {out_columns, decided, point ? out.point_class.data() + first : nullptr});
+  else std::fill(decided, decided + (end - first), std::uint8_t{0});
+  const fast_kernel kernel = right_handed ? (f32 ? spec.fast_f32 : spec.fast_f64) : nullptr;
   double in[16];
   fast_reference r;
   std::uint64_t intervals = 0, rationals = 0;

@@ -199,11 +199,13 @@ double to_double(const rational& q) { return to_nearest_double(q); }
 
 // Operations without derivatives over dual numbers (exact values with square roots or
 // cotangents, computed as correctly rounding rational representatives): D_i estimated from the
-// exact oracle itself, D_i ≈ Σ_j max_± |f_i(x ± δ_j e_j) − f_i(x)| |x_j| / |δ_j| with
-// |δ_j| ≈ 2^-20 |x_j| (exactly the difference of the two double inputs). A representative is
-// within a double's ulp of f_i, so each quotient is within 2^-32 |f_i| of the difference
-// quotient, negligible against |f_i| + D_i; the larger of the two one-sided differences errs
-// towards a larger D (a verdict towards stable). A perturbed input on which some output stops
+// exact oracle itself, D_i ≈ Σ_j max |f_i(x ± δ_j e_j) − f_i(x)| |x_j| / |δ_j| over both sides
+// and |δ_j| ≈ 2^-20, 2^-34 and 2^-48 |x_j| (exactly the difference of the two double inputs):
+// near a singularity a bounded output (a unit vector) saturates over the longer steps, so the
+// shorter ones see the slope. A representative is within a double's ulp of f_i, so a quotient
+// is within 2^-4 |f_i| of the difference quotient even at 2^-48: it can only enlarge D by a
+// fraction of |f_i|, which moves η by a few percent; every maximum errs towards a larger D (a
+// verdict towards stable). A perturbed input on which some output stops
 // existing, or a quotient that does not settle, counts as D = ∞: the problem is singular within
 // 2^-20, and any output there is `stable`.
 template <class F>
@@ -226,8 +228,9 @@ void decide_generic(case_grade& g, const test_case& c, const conventions& conv, 
     const double xj = c.inputs[j];
     if (xj == 0) continue;  // a zero input stays zero under relative perturbations
     std::array<rational, 16> steepest{};
-    for (const double side : {1.0, -1.0}) {
-      const double moved = xj + side * std::ldexp(std::fabs(xj), -20);
+    for (const double side : {1.0, -1.0})
+    for (const int step_exponent : {-20, -34, -48}) {
+      const double moved = xj + side * std::ldexp(std::fabs(xj), step_exponent);
       bool settled = moved != xj && std::isfinite(moved);
       exact_outputs<rational> p;
       if (settled) {
@@ -464,7 +467,11 @@ case_conditioning conditioning(const test_case& c, const conventions& conv, cons
   case_conditioning r;
   r.unit_roundoff = unit_roundoff(c.type);
   r.stable_constant = spec.stable_constant;
-  if (!spec.derivatives_rational || c.inputs.size() > max_derivative_inputs) return r;
+  if (!spec.derivatives_rational || c.inputs.size() > max_derivative_inputs) {
+    // No derivatives over dual numbers: the range alone (inputs and exact outputs).
+    r.out_of_range = leaves_range(c, conv);
+    return r;
+  }
   derivative_context context =
       c.type == scalar_type::f32 ? context_for<float>(spec, c) : context_for<double>(spec, c);
   const exact_outputs<dual<rational>> e = derivatives<rational>(spec, c, conv, context);

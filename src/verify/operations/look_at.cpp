@@ -87,6 +87,14 @@ void generate(case_rng& r, input_class cls, const conventions&, double* x) {
     }
   }
   for (int i = 0; i < 9; ++i) x[i] = r.fit(x[i]);
+  if (cls == input_class::range) {
+    // Every input scaled by one power of two (the frame does not change, the translation scales)
+    // so that |eye − target|² overflows, or underflows.
+    const int top = top_exponent(x, 9);
+    const int e = (r.raw() & 1) ? max_exponent(r) / 2 - top + static_cast<int>(r.integer(1, 3))
+                                : min_normal_exponent(r) / 2 - top - 3 - static_cast<int>(r.integer(0, 2));
+    if (!scale_exactly(r, x, 9, e)) generate(r, cls, conventions{}, x);  // draw again
+  }
 }
 
 // log2 of the sine of the angle between up and the view direction (−inf when parallel or

@@ -6,8 +6,9 @@
 // by Ziv's strategy (constructions/irrational.h); the depth rows are rational. Left-handed:
 // column 2 negated.
 // Classes: near-degenerate = far within a relative 2^-k of near, far ≫ near, or a field of
-// view within 2^-k of 0 or of 180°; degenerate = n = f (the depth entries undefined).
-// fovy outside (0, π), aspect ≤ 0, n ≤ 0 or f ≤ 0 admit no projection: every output undefined.
+// view within 2^-k of 0 or of 180°; degenerate = n = f (the depth entries undefined), for the
+// infinite one fovy = 0 (the focal scales (0,0) and (1,1) undefined, the depth entries exist).
+// fovy outside [0, π), aspect ≤ 0, n ≤ 0 or f ≤ 0 admit no projection: every output undefined.
 #include <cmath>
 #include <limits>
 
@@ -23,7 +24,8 @@ exact_outputs<rational> exact_rational(const double* in, const conventions& conv
   const double fovy = in[0];
   const rational aspect = exact_value(in[1]), n = exact_value(in[2]);
   rational f = infinite ? rational(0) : exact_value(in[3]);
-  if (!field_of_view_in_range(fovy, conv.angle) || sgn(aspect) <= 0 || sgn(n) <= 0 || (!infinite && sgn(f) <= 0)) {
+  const bool no_field = fovy == 0;  // cot(0) does not exist: only the focal scales go
+  if ((!no_field && !field_of_view_in_range(fovy, conv.angle)) || sgn(aspect) <= 0 || sgn(n) <= 0 || (!infinite && sgn(f) <= 0)) {
     r.set_undefined(16);
     return r;
   }
@@ -34,6 +36,12 @@ exact_outputs<rational> exact_rational(const double* in, const conventions& conv
   }
   // The depth rows exactly, with a unit focal scale in the x and y rows replaced below.
   mat4<rational> M = perspective(rational(1), rational(1), n, f, conv.depth, infinite);
+  if (no_field) {
+    r.entry_undefined[0] = r.entry_undefined[5] = true;
+    M(0, 0) = M(1, 1) = rational(0);
+    r.set_matrix(with_handedness(M, conv.hand));
+    return r;
+  }
   M(1, 1) = correctly_rounding_representative([&](long p) { return cot_half_angle(fovy, conv.angle, p); },
                                               "cot(fovy/2)");
   M(0, 0) = correctly_rounding_representative(
@@ -70,12 +78,25 @@ double field_of_view(case_rng& r, input_class cls, angle_unit unit) {
   return r.fit(x);
 }
 
+// range: n (and f) scaled by one power of two so that n f (n²) overflows, or underflows; A does
+// not change, B scales.
+void scale_depth(case_rng& r, double* x, std::size_t count) {
+  const int top = top_exponent(x + 2, count);
+  const int e = (r.raw() & 1) ? max_exponent(r) / 2 - top + static_cast<int>(r.integer(1, 3))
+                              : min_normal_exponent(r) / 2 - top - 3 - static_cast<int>(r.integer(0, 2));
+  if (!scale_exactly(r, x + 2, count, e)) x[2] = 0;  // hardly ever: out of the class, drawn again
+}
+
 template <bool infinite>
 void generate(case_rng& r, input_class cls, const conventions& req, double* x) {
   x[0] = field_of_view(r, cls, req.angle);
   x[1] = r.fit(positive(r, -1, 2));  // aspect
   x[2] = r.fit(positive(r, -4, 0));  // near
-  if (infinite) return;
+  if (infinite) {
+    if (cls == input_class::degenerate) x[0] = 0;  // no field of view: cot(0) does not exist
+    if (cls == input_class::range) scale_depth(r, x, 1);
+    return;
+  }
   x[3] = r.fit(x[2] + positive(r, 0, 6));
   if (cls == input_class::near_degenerate && (r.raw() & 1)) {
     if (r.raw() & 1) {
@@ -87,6 +108,7 @@ void generate(case_rng& r, input_class cls, const conventions& req, double* x) {
   } else if (cls == input_class::degenerate) {
     x[3] = x[2];
   }
+  if (cls == input_class::range) scale_depth(r, x, 2);
 }
 
 // The smaller of log2 of the relative depth extent and log2 of the angle's relative distance

@@ -61,6 +61,12 @@ void generate(case_rng& r, input_class cls, const conventions&, double* x) {
     const int which = static_cast<int>(r.integer(0, 2));
     if (which < 2) x[which] = 0;
     else x[3] = x[2];
+  } else if (cls == input_class::range) {
+    // n and f scaled by one power of two so that n f overflows, or underflows.
+    const int top = top_exponent(x + 2, 2);
+    const int e = (r.raw() & 1) ? max_exponent(r) / 2 - top + static_cast<int>(r.integer(1, 3))
+                                : min_normal_exponent(r) / 2 - top - 3 - static_cast<int>(r.integer(0, 2));
+    if (!scale_exactly(r, x + 2, 2, e)) generate(r, cls, conventions{}, x);  // draw again
   }
 }
 
