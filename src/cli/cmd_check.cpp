@@ -3,12 +3,14 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <limits>
 #include <map>
+#include <memory>
 #include <sstream>
 
 #include "command.h"
@@ -25,6 +27,8 @@
 #include "shadowproof/verify/parallel.h"
 #include "shadowproof/verify/protocol.h"
 #include "shadowproof/verify/report.h"
+#include "html_sections.h"
+#include "shard_report.h"
 #include "verify_print.h"
 
 namespace shadowproof::cli {
@@ -44,13 +48,24 @@ struct check_options {
   std::optional<std::uint64_t> max_ulps;
   std::string fail_on;
   unsigned jobs = 0;  // 0: default_jobs()
+  std::string shard_spec;
+  std::string html;
+  std::string command_line;
 };
+
+// What makes two check reports shards of one run.
+nlohmann::json run_json(const check_options& o) {
+  return {{"command", "check"}, {"impl", o.impl}, {"op", o.op}, {"class", o.cls}, {"cases", o.cases},
+          {"seed", o.seed}, {"input", o.input}, {"max_ulps", o.max_ulps ? nlohmann::json(*o.max_ulps) : nlohmann::json()},
+          {"fail_on", o.fail_on}};
+}
 
 // One implementation's cases and grades.
 struct impl_run {
   const implementation* impl;
   std::vector<test_case> cases;
   std::vector<case_grade> grades;
+  std::vector<std::size_t> positions;  // of each case in the whole run (a shard has some of them)
   const test_case& by_id(std::uint64_t id) const {
     if (id < cases.size() && cases[id].id == id) return cases[id];  // generated cases: id = index
     for (const auto& c : cases)
@@ -164,6 +179,173 @@ std::optional<verdict> parse_fail_on(const std::string& text) {
   return v;
 }
 
+// What a check report shows of one implementation, from its grades or merged from shards.
+struct check_result {
+  const implementation* impl = nullptr;
+  grade_summary summary;                                      // 3 worst cases
+  std::vector<std::pair<input_class, grade_summary>> by_class;  // 1 worst case each
+  std::vector<std::string> case_verdicts;                     // in the order of the run's cases
+  case_lookup lookup;                                         // the cases the summaries single out
+};
+
+struct check_report {
+  std::vector<check_result> results;
+  oracle_counters counters;
+  double grading_seconds = 0;  ///< running and grading, this process only (0 after a merge)
+  std::size_t graded = 0;      ///< cases graded in that time
+  std::size_t given_cases = 0;  // cases of --input (all of them, not a shard's)
+};
+
+bool gates_failed(const check_options& o, const check_report& report, bool* ulps = nullptr, bool* verdicts = nullptr) {
+  const gates gate{o.max_ulps, parse_fail_on(o.fail_on)};
+  bool ulps_failed = false, verdict_failed = false;
+  for (const auto& x : report.results) {
+    ulps_failed = ulps_failed || gate.ulps_exceeded(x.summary);
+    verdict_failed = verdict_failed || gate.verdict_reached(x.summary);
+  }
+  if (ulps) *ulps = ulps_failed;
+  if (verdicts) *verdicts = verdict_failed;
+  return ulps_failed || verdict_failed;
+}
+
+nlohmann::json check_json(const check_options& o, const check_report& report) {
+  const gates gate{o.max_ulps, parse_fail_on(o.fail_on)};
+  nlohmann::json doc{{"seed", o.seed}, {"cases_per_impl", o.cases}, {"results", nlohmann::json::array()}};
+  for (const auto& x : report.results) {
+    const implementation* impl = x.impl;
+    auto conv_of = [impl](std::uint64_t) -> const conventions& { return impl->conv; };
+    nlohmann::json j = summary_json(x.summary, x.lookup, conv_of);
+    j["impl"] = impl->name;
+    j["op"] = std::string(to_string(impl->op));
+    j["type"] = std::string(to_string(impl->type));
+    j["origin"] = impl->origin;
+    j["conventions"] = conventions_json(impl->conv);
+    nlohmann::json by_class = nlohmann::json::object();
+    for (const auto& [cls, s] : x.by_class) {
+      nlohmann::json c = summary_json(s, x.lookup, conv_of);
+      c.erase("examples");
+      by_class[std::string(to_string(cls))] = c;
+    }
+    j["by_class"] = by_class;
+    j["case_verdicts"] = x.case_verdicts;  // by case id
+    doc["results"].push_back(j);
+  }
+  doc["oracle"] = {{"decided_by_intervals", report.counters.decided_by_intervals},
+                   {"fell_back_to_rationals", report.counters.fell_back_to_rationals}};
+  if (o.max_ulps) doc["max_ulps_threshold"] = *o.max_ulps;
+  if (gate.fail_on) doc["fail_on"] = std::string(to_string(*gate.fail_on));
+  doc["exceeded"] = gates_failed(o, report);
+  return doc;
+}
+
+// Prints the report (text, or JSON with --json) and returns the exit code.
+int print_check_report(const check_options& o, const check_report& report) {
+  const gates gate{o.max_ulps, parse_fail_on(o.fail_on)};
+  bool ulps_failed = false, verdict_failed = false;
+  const bool failed = gates_failed(o, report, &ulps_failed, &verdict_failed);
+  if (o.json) {
+    std::cout << check_json(o, report).dump(2) << '\n';
+    return failed ? 1 : 0;
+  }
+  std::vector<verdict_row> rows;
+  for (const auto& x : report.results) rows.push_back({x.impl->name, x.summary});
+  const report_style style{o.wide, 100};
+  const std::size_t n = report.results.size();
+  std::cout << "Graded " << n << " implementation" << (n == 1 ? "" : "s") << ", "
+            << (o.input.empty() ? std::to_string(o.cases) + " cases each (seed " + std::to_string(o.seed) + ")"
+                                : std::to_string(report.given_cases) + " cases of " + o.input)
+            << ", against the exact rational answer.\n"
+            << "A case's verdict is that of its worst output, an implementation's that of its worst case\n"
+            << "(docs/verdicts.md); the table counts cases.\n\n";
+  print_verdict_table(std::cout, rows, style);
+  bool first = true;
+  for (const auto& x : report.results) {
+    if (x.summary.worst_verdict <= verdict::faithful && !x.summary.misclassified) continue;
+    if (first) std::cout << "\nWorst cases (bit-exact; each command prints the exact answer):\n";
+    first = false;
+    const implementation* impl = x.impl;
+    auto conv_of = [impl](std::uint64_t) -> const conventions& { return impl->conv; };
+    print_examples(std::cout, impl->name, x.summary, x.lookup, conv_of, style);
+  }
+  std::cout << "\nOracle: " << report.counters.decided_by_intervals << " cases decided by interval arithmetic, "
+            << report.counters.fell_back_to_rationals << " by exact rationals";
+  // The rate is a measurement of this run (a merge of shards has none): reports compared byte
+  // for byte mask it.
+  if (report.grading_seconds > 0)
+    std::cout << "; graded at " << throughput_text(static_cast<double>(report.graded), report.grading_seconds);
+  std::cout << ".\n";
+  if (!o.svg.empty()) std::cout << "Plot written to " << o.svg << '\n';
+  if (o.max_ulps)
+    std::cout << (ulps_failed ? "FAIL" : "PASS") << ": --max-ulps " << *o.max_ulps
+              << (ulps_failed ? " exceeded, or NaN/Inf, garbage or misclassified cases\n" : " held\n");
+  if (gate.fail_on)
+    std::cout << (verdict_failed ? "FAIL" : "PASS") << ": --fail-on " << to_string(*gate.fail_on)
+              << (verdict_failed ? ": some case is at or past it\n" : ": every case is better\n");
+  return failed ? 1 : 0;
+}
+
+// What merge needs of one implementation's shard besides its report: the statistics of each
+// summary, where each case stood in the whole run, and the singled-out cases with the
+// implementation's outputs for them.
+nlohmann::json shard_payload(const impl_run& r, const check_result& x) {
+  nlohmann::json j;
+  j["summary"] = mergeable_json(summarize_mergeable(r.grades, 3));
+  nlohmann::json by_class = nlohmann::json::object();
+  std::map<std::uint64_t, const case_grade*> singled;
+  for (const auto& g : singled_out_cases(x.summary)) singled[g.id] = nullptr;
+  for (const auto& [cls, s] : x.by_class) {
+    std::vector<case_grade> part_of_class;
+    for (const auto& g : r.grades)
+      if (g.cls == cls) part_of_class.push_back(g);
+    by_class[std::string(to_string(cls))] = mergeable_json(summarize_mergeable(part_of_class, 1));
+    for (const auto& g : singled_out_cases(s)) singled[g.id] = nullptr;
+  }
+  j["by_class"] = by_class;
+  j["positions"] = r.positions;
+  nlohmann::json candidates = nlohmann::json::array();
+  std::vector<double> out(signature(r.impl->op).output_count);
+  for (const auto& [id, unused] : singled) {
+    const test_case& c = r.by_id(id);
+    std::fill(out.begin(), out.end(), 0.0);  // as run_and_grade
+    r.impl->run(c.inputs.data(), out.data());
+    candidates.push_back(candidate_json({c, out}));
+  }
+  j["candidates"] = candidates;
+  return j;
+}
+
+html_page check_page(const check_options& o, const check_report& report, const std::vector<impl_run>& runs) {
+  html_page page;
+  page.title = "shadowproof check";
+  page.command = o.command_line;
+  const std::size_t n = report.results.size();
+  page.summary.push_back(
+      "Graded " + std::to_string(n) + " implementation" + (n == 1 ? "" : "s") + ", " +
+      (o.input.empty() ? std::to_string(o.cases) + " cases each (seed " + std::to_string(o.seed) + ")"
+                       : std::to_string(report.given_cases) + " cases of " + o.input) +
+      ", against the exact rational answer. A case's verdict is that of its worst output, an implementation's "
+      "that of its worst case (docs/verdicts.md).");
+  page.summary.push_back("Oracle: " + std::to_string(report.counters.decided_by_intervals) +
+                         " cases decided by interval arithmetic, " +
+                         std::to_string(report.counters.fell_back_to_rationals) + " by exact rationals.");
+  const gates gate{o.max_ulps, parse_fail_on(o.fail_on)};
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto& x = report.results[i];
+    graded_run g;
+    g.name = x.impl->name;
+    g.origin = x.impl->origin;
+    g.op = x.impl->op;
+    g.type = x.impl->type;
+    g.conv = &x.impl->conv;
+    g.summary = &x.summary;
+    g.grades = &runs[i].grades;
+    g.lookup = x.lookup;
+    g.failed = gate.ulps_exceeded(x.summary) || gate.verdict_reached(x.summary);
+    page.sections.push_back(graded_section(g));
+  }
+  return page;
+}
+
 int run_check(const check_options& o) {
   const auto& all = builtin_implementations();
   if (o.list) {
@@ -185,7 +367,7 @@ int run_check(const check_options& o) {
       throw error(errc::verify_unknown_class,
                   "unknown --class '" + o.cls + "'; expected regular, near-degenerate, degenerate or range");
   }
-  const gates gate{o.max_ulps, parse_fail_on(o.fail_on)};
+  (void)parse_fail_on(o.fail_on);  // a bad --fail-on fails before any grading
   std::vector<const implementation*> chosen;
   for (const auto& impl : all)
     if ((o.impl == "all" || impl.name == o.impl) && (!op_filter || impl.op == *op_filter)) chosen.push_back(&impl);
@@ -213,6 +395,7 @@ int run_check(const check_options& o) {
                                          std::string(to_string(given.front().type)) + " case like the first");
     chosen = matching;
   }
+  const shard part = o.shard_spec.empty() ? shard{} : parse_shard(o.shard_spec);
   std::vector<impl_run> runs;
   oracle_counters counters;
   double grading_seconds = 0;  // running the implementations and grading, not generating cases
@@ -222,6 +405,13 @@ int run_check(const check_options& o) {
     for (const implementation* impl : chosen) {
       impl_run r{impl, given.empty() ? generate_cases(impl->op, impl->type, o.cases, o.seed, class_filter, impl->conv)
                                      : given, {}};
+      // A shard keeps its own cases, remembering where each stood in the whole run.
+      for (std::size_t k = 0; k < r.cases.size(); ++k)
+        if (part.contains(r.cases[k].id)) {
+          r.positions.push_back(k);
+          if (r.positions.size() - 1 != k) r.cases[r.positions.size() - 1] = std::move(r.cases[k]);
+        }
+      r.cases.resize(r.positions.size());
       const auto start = std::chrono::steady_clock::now();
       r.grades = run_and_grade_in_parallel(*impl, r.cases, o.jobs, oracle_mode::filtered, &counters);
       grading_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -231,88 +421,45 @@ int run_check(const check_options& o) {
     }
   }
 
-  bool ulps_failed = false, verdict_failed = false;
-  std::vector<verdict_row> rows;
-  std::vector<grade_summary> summaries;
+  check_report report;
+  report.counters = counters;
+  report.grading_seconds = grading_seconds;
+  report.graded = graded;
+  report.given_cases = given.size();
   for (const auto& r : runs) {
-    summaries.push_back(summarize(r.grades, 3));
-    ulps_failed = ulps_failed || gate.ulps_exceeded(summaries.back());
-    verdict_failed = verdict_failed || gate.verdict_reached(summaries.back());
-    rows.push_back({r.impl->name, summaries.back()});
-  }
-  const bool failed = ulps_failed || verdict_failed;
-  if (!o.svg.empty()) write_svg(o.svg, runs);
-  if (o.json) {
-    nlohmann::json doc{{"seed", o.seed}, {"cases_per_impl", o.cases}, {"results", nlohmann::json::array()}};
-    for (std::size_t i = 0; i < runs.size(); ++i) {
-      const auto& r = runs[i];
-      auto lookup = [&r](std::uint64_t id) -> const test_case& { return r.by_id(id); };
-      auto conv_of = [&r](std::uint64_t) -> const conventions& { return r.impl->conv; };
-      nlohmann::json j = summary_json(summaries[i], lookup, conv_of);
-      j["impl"] = r.impl->name;
-      j["op"] = std::string(to_string(r.impl->op));
-      j["type"] = std::string(to_string(r.impl->type));
-      j["origin"] = r.impl->origin;
-      j["conventions"] = conventions_json(r.impl->conv);
-      nlohmann::json by_class = nlohmann::json::object();
-      for (input_class cls : all_input_classes()) {
-        std::vector<case_grade> part;
-        for (const auto& g : r.grades)
-          if (g.cls == cls) part.push_back(g);
-        if (part.empty()) continue;
-        const grade_summary s = summarize(part, 1);
-        nlohmann::json c = summary_json(s, lookup, conv_of);
-        c.erase("examples");
-        by_class[std::string(to_string(cls))] = c;
-      }
-      j["by_class"] = by_class;
-      nlohmann::json verdicts = nlohmann::json::array();
-      for (const auto& g : r.grades) verdicts.push_back(std::string(to_string(g.v)));
-      j["case_verdicts"] = verdicts;  // by case id
-      doc["results"].push_back(j);
+    check_result x;
+    x.impl = r.impl;
+    x.summary = summarize(r.grades, 3);
+    for (input_class cls : all_input_classes()) {
+      std::vector<case_grade> part_of_class;
+      for (const auto& g : r.grades)
+        if (g.cls == cls) part_of_class.push_back(g);
+      if (!part_of_class.empty()) x.by_class.emplace_back(cls, summarize(part_of_class, 1));
     }
-    doc["oracle"] = {{"decided_by_intervals", counters.decided_by_intervals},
-                     {"fell_back_to_rationals", counters.fell_back_to_rationals}};
-    if (o.max_ulps) doc["max_ulps_threshold"] = *o.max_ulps;
-    if (gate.fail_on) doc["fail_on"] = std::string(to_string(*gate.fail_on));
-    doc["exceeded"] = failed;
+    for (const auto& g : r.grades) x.case_verdicts.push_back(std::string(to_string(g.v)));
+    const impl_run* run = &r;
+    x.lookup = [run](std::uint64_t id) -> const test_case& { return run->by_id(id); };
+    report.results.push_back(std::move(x));
+  }
+  if (!o.svg.empty()) write_svg(o.svg, runs);
+  if (!o.html.empty()) write_html(o.html, check_page(o, report, runs));
+  if (!o.shard_spec.empty() && o.json) {
+    // A shard's report: the run's JSON, the shard block, and what merge needs besides.
+    nlohmann::json doc = check_json(o, report);
+    doc["shard"] = shard_json(part, run_json(o));
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+      doc["results"][i]["merge"] = shard_payload(runs[i], report.results[i]);
+      doc["results"][i]["merge"]["given_cases"] = given.size();
+    }
     std::cout << doc.dump(2) << '\n';
-    return failed ? 1 : 0;
+    return gates_failed(o, report) ? 1 : 0;
   }
-  const report_style style{o.wide, 100};
-  std::cout << "Graded " << runs.size() << " implementation" << (runs.size() == 1 ? "" : "s") << ", "
-            << (given.empty() ? std::to_string(o.cases) + " cases each (seed " + std::to_string(o.seed) + ")"
-                              : std::to_string(given.size()) + " cases of " + o.input)
-            << ", against the exact rational answer.\n"
-            << "A case's verdict is that of its worst output, an implementation's that of its worst case\n"
-            << "(docs/verdicts.md); the table counts cases.\n\n";
-  print_verdict_table(std::cout, rows, style);
-  bool first = true;
-  for (std::size_t i = 0; i < runs.size(); ++i) {
-    if (summaries[i].worst_verdict <= verdict::faithful && !summaries[i].misclassified) continue;
-    if (first) std::cout << "\nWorst cases (bit-exact; each command prints the exact answer):\n";
-    first = false;
-    const auto& r = runs[i];
-    auto lookup = [&r](std::uint64_t id) -> const test_case& { return r.by_id(id); };
-    auto conv_of = [&r](std::uint64_t) -> const conventions& { return r.impl->conv; };
-    print_examples(std::cout, r.impl->name, summaries[i], lookup, conv_of, style);
-  }
-  std::cout << "\nOracle: " << counters.decided_by_intervals << " cases decided by interval arithmetic, "
-            << counters.fell_back_to_rationals << " by exact rationals; graded at "
-            << throughput_text(static_cast<double>(graded), grading_seconds) << ".\n";
-  if (!o.svg.empty()) std::cout << "Plot written to " << o.svg << '\n';
-  if (o.max_ulps)
-    std::cout << (ulps_failed ? "FAIL" : "PASS") << ": --max-ulps " << *o.max_ulps
-              << (ulps_failed ? " exceeded, or NaN/Inf, garbage or misclassified cases\n" : " held\n");
-  if (gate.fail_on)
-    std::cout << (verdict_failed ? "FAIL" : "PASS") << ": --fail-on " << to_string(*gate.fail_on)
-              << (verdict_failed ? ": some case is at or past it\n" : ": every case is better\n");
-  return failed ? 1 : 0;
+  return print_check_report(o, report);
 }
 
 const command_registration reg{command{
     "check", "grade built-in float implementations (seed formulas, GLM, Eigen, Irrlicht, Ogre) against the exact oracle",
-    [](CLI::App& app, const global_options&) {
+    [](CLI::App& app, const global_options& globals) {
       auto o = std::make_shared<check_options>();
       app.add_option("--impl", o->impl, "implementation name, or 'all' (see --list)");
       app.add_option("--op", o->op, "only this operation: " + operation_names(", "));
@@ -333,8 +480,87 @@ const command_registration reg{command{
                      "range, wrong, nonfinite, garbage");
       add_jobs_option(app, o->jobs);
       app.add_flag("--list", o->list, "print the registered implementation names, one per line");
+      app.add_option("--shard", o->shard_spec, "grade only shard i of N (the cases whose id mod N is i); merge the "
+                                               "--json reports with `shadowproof merge`");
+      app.add_option("--html", o->html, "write a self-contained HTML report to this file");
+      o->command_line = globals.command_line;
       return [o] { return run_check(*o); };
     }}};
 
+
 }  // namespace
+
+int merge_check_shards(const std::vector<shard_report>& shards, const merge_options& m) {
+  const nlohmann::json& run = shards.front().run;
+  check_options o;
+  try {
+    o.impl = run.at("impl").get<std::string>();
+    o.op = run.at("op").get<std::string>();
+    o.cls = run.at("class").get<std::string>();
+    o.cases = run.at("cases").get<std::size_t>();
+    o.seed = run.at("seed").get<std::uint64_t>();
+    o.input = run.at("input").get<std::string>();
+    if (!run.at("max_ulps").is_null()) o.max_ulps = run.at("max_ulps").get<std::uint64_t>();
+    o.fail_on = run.at("fail_on").get<std::string>();
+  } catch (const nlohmann::json::exception& e) {
+    throw error(errc::merge_input, shards.front().path + ": the run of the shard is malformed: " + e.what());
+  }
+  o.json = m.json;
+  o.wide = m.wide;
+  check_report report;
+  // The cases singled out, kept for the lookups of the merged report.
+  auto store = std::make_shared<std::vector<std::map<std::uint64_t, test_case>>>();
+  try {
+    for (const auto& s : shards) {
+      const auto& oracle = member(s, s.doc, "oracle");
+      report.counters.decided_by_intervals += oracle.at("decided_by_intervals").get<std::uint64_t>();
+      report.counters.fell_back_to_rationals += oracle.at("fell_back_to_rationals").get<std::uint64_t>();
+    }
+    const std::size_t n = member(shards.front(), shards.front().doc, "results").size();
+    store->resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      check_result x;
+      x.impl = &find_builtin_implementation(shards.front().doc["results"][i].at("impl").get<std::string>());
+      std::vector<mergeable_summary> parts;
+      std::map<std::string, std::vector<mergeable_summary>> class_parts;
+      std::vector<case_grade> candidates;
+      std::vector<std::pair<std::size_t, std::string>> verdicts;
+      for (const auto& s : shards) {
+        const auto& results = member(s, s.doc, "results");
+        if (results.size() != n || results[i].at("impl") != x.impl->name)
+          throw error(errc::merge_input, s.path + ": its results are not those of " + shards.front().path);
+        const auto& payload = member(s, results[i], "merge");
+        parts.push_back(mergeable_from_json(s, payload.at("summary")));
+        for (const auto& [cls, j] : payload.at("by_class").items()) class_parts[cls].push_back(mergeable_from_json(s, j));
+        for (const auto& c : payload.at("candidates")) {
+          const candidate k = candidate_from_json(s, c, x.impl->op, x.impl->type);
+          candidates.push_back(grade_case(k.c, x.impl->conv, k.outputs.data()));
+          (*store)[i][k.c.id] = k.c;
+        }
+        const auto positions = payload.at("positions").get<std::vector<std::size_t>>();
+        const auto& each = results[i].at("case_verdicts");
+        if (positions.size() != each.size()) throw error(errc::merge_input, s.path + ": case_verdicts and positions differ in length");
+        for (std::size_t k = 0; k < positions.size(); ++k) verdicts.emplace_back(positions[k], each[k].get<std::string>());
+        report.given_cases = payload.at("given_cases").get<std::size_t>();
+      }
+      x.summary = merge_summaries(parts, candidates, 3).summary;
+      for (input_class cls : all_input_classes()) {
+        const auto it = class_parts.find(std::string(to_string(cls)));
+        if (it == class_parts.end()) continue;
+        std::vector<case_grade> of_class;
+        for (const auto& g : candidates)
+          if (g.cls == cls) of_class.push_back(g);
+        x.by_class.emplace_back(cls, merge_summaries(it->second, of_class, 1).summary);
+      }
+      std::sort(verdicts.begin(), verdicts.end());
+      for (auto& [position, v] : verdicts) x.case_verdicts.push_back(std::move(v));
+      x.lookup = [store, i](std::uint64_t id) -> const test_case& { return (*store)[i].at(id); };
+      report.results.push_back(std::move(x));
+    }
+  } catch (const nlohmann::json::exception& e) {
+    throw error(errc::merge_input, "a check shard report is malformed: " + std::string(e.what()));
+  }
+  return print_check_report(o, report);
+}
+
 }  // namespace shadowproof::cli

@@ -3,12 +3,16 @@
 #include <unistd.h>
 
 #include <iostream>
+#include <iomanip>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
 
 #include "command.h"
 #include "jobs_option.h"
+#include "html_report.h"
+#include "shard_report.h"
+#include "verify_print.h"
 #include "shadowproof/fuzz/differential.h"
 #include "shadowproof/core/error.h"
 #include "shadowproof/verify/implementation.h"
@@ -32,7 +36,16 @@ struct fuzz_options {
   bool json = false;
   bool no_metamorphic = false;
   unsigned jobs = 0;  // 0: default_jobs()
+  std::string shard_spec;
+  std::string html;
+  std::string command_line;
 };
+
+// What makes two fuzz reports shards of one run.
+nlohmann::json run_json(const fuzz_options& o) {
+  return {{"command", "fuzz"}, {"impl", o.impl}, {"seed", o.seed}, {"cases", o.cases}, {"seconds", o.seconds},
+          {"max_ulps", o.max_ulps}, {"metamorphic", !o.no_metamorphic}};
+}
 
 
 nlohmann::json case_object(const test_case& c) { return nlohmann::json::parse(case_json_line(c)); }
@@ -87,6 +100,73 @@ std::string readable_inputs(const test_case& c) {
   return out;
 }
 
+template <class Enum, class Names>
+std::optional<Enum> enum_from_string(const std::string& name, const Names& all) {
+  for (Enum e : all)
+    if (to_string(e) == name) return e;
+  return std::nullopt;
+}
+
+// A case object of report_json read back: parse_case_line reads the exact decimals, which do
+// not tell −0 from +0; the hex strings beside them do.
+test_case case_from_json(const nlohmann::json& j, std::size_t line) {
+  test_case c = parse_case_line(j.dump(), line);
+  std::size_t k = 0;
+  for (const auto& group : signature(c.op).inputs) {
+    const auto it = j.find(group.name);
+    for (std::size_t i = 0; i < group.size; ++i, ++k)
+      if (it != j.end() && it->is_array() && i < it->size() && (*it)[i].is_string() &&
+          (*it)[i].get<std::string>() == "-0x0p+0")
+        c.inputs[k] = -0.0;
+  }
+  return c;
+}
+
+// A report printed by report_json, read back exactly (cases as case lines, doubles as JSON
+// numbers, which nlohmann prints and reads back bit for bit).
+fuzz_report report_from_json(const shard_report& shard) {
+  const nlohmann::json& doc = shard.doc;
+  auto bad = [&](const std::string& what) { return error(errc::merge_input, shard.path + ": " + what); };
+  try {
+    fuzz_report r;
+    r.impl = member(shard, doc, "impl").get<std::string>();
+    r.cases = member(shard, doc, "cases").get<std::size_t>();
+    r.failing_cases = member(shard, doc, "failing_cases").get<std::map<std::string, std::size_t>>();
+    r.metamorphic_max_ulps = member(shard, doc, "metamorphic_max_ulps").get<std::map<std::string, std::uint64_t>>();
+    std::size_t line = 0;
+    for (const auto& j : member(shard, doc, "failures")) {
+      fuzz_failure f;
+      const auto kind = enum_from_string<failure_kind>(j.at("kind").get<std::string>(),
+          std::initializer_list<failure_kind>{failure_kind::nonfinite, failure_kind::garbage,
+                                              failure_kind::misclassified, failure_kind::ulps, failure_kind::metamorphic});
+      if (!kind) throw bad("unknown failure kind " + j.at("kind").dump());
+      f.kind = *kind;
+      f.family = j.at("family").get<std::string>();
+      f.relation = j.value("relation", std::string());
+      f.bits = j.at("bits").get<double>();
+      f.bits_before = j.at("bits_before").get<std::size_t>();
+      f.bits_after = j.at("bits_after").get<std::size_t>();
+      f.original = case_from_json(j.at("original"), ++line);
+      f.shrunk = case_from_json(j.at("shrunk"), line);
+      if (j.contains("exact_class")) {
+        f.original_grade.exact_class = enum_from_string<point_class>(j["exact_class"].get<std::string>(),
+            std::initializer_list<point_class>{point_class::on_receiver, point_class::shadow, point_class::behind_receiver,
+                                               point_class::beyond_light, point_class::at_infinity, point_class::at_light,
+                                               point_class::light_on_plane, point_class::light_parallel,
+                                               point_class::line_in_plane});
+        f.original_grade.got_class = enum_from_string<image_class>(j.at("got_class").get<std::string>(),
+            std::initializer_list<image_class>{image_class::on_receiver, image_class::shadow, image_class::behind_receiver,
+                                               image_class::beyond_light, image_class::nonfinite, image_class::other});
+        if (!f.original_grade.exact_class || !f.original_grade.got_class) throw bad("unknown point or image class");
+      }
+      r.failures.push_back(std::move(f));
+    }
+    return r;
+  } catch (const nlohmann::json::exception& e) {
+    throw bad(std::string("not a fuzz report: ") + e.what());
+  }
+}
+
 void print_text(std::ostream& out, const fuzz_report& r, const implementation& impl) {
   out << "fuzz " << r.impl << ": " << r.cases << " cases";
   for (const auto& [kind, n] : r.failing_cases) out << ", " << n << " " << kind;
@@ -112,6 +192,51 @@ void print_text(std::ostream& out, const fuzz_report& r, const implementation& i
     out << "\nEach shrunk case, as a case line and a Catch2 test: --out DIR (docs/tutorial-fuzz.md).\n";
 }
 
+std::string bits_text(double bits) {
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(1) << bits;
+  return s.str();
+}
+
+html_page fuzz_page(const fuzz_options& o, const implementation& impl, const fuzz_report& r,
+                    std::vector<html_point> points) {
+  html_page page;
+  page.title = "shadowproof fuzz: " + impl.name;
+  page.command = o.command_line;
+  page.summary.push_back(std::to_string(r.cases) + " cases from seed " + std::to_string(o.seed) +
+                         "; an output " + std::to_string(o.max_ulps) +
+                         " or more ulps off the correctly rounded exact value fails, and so does a NaN/Inf "
+                         "where the answer exists, a finite number where it does not, a shadow on the wrong "
+                         "side, or a metamorphic relation broken by that many ulps.");
+  html_section s;
+  s.name = impl.name;
+  s.verdict = r.failures.empty() ? "pass" : "fail";
+  s.counts_label = "failing cases by kind";
+  s.failed = !r.failures.empty();
+  s.facts = {{"cases", std::to_string(r.cases)}, {"operation", std::string(to_string(impl.op))},
+             {"type", std::string(to_string(impl.type))}, {"distinct failures", std::to_string(r.failures.size())}};
+  for (const auto& [kind, n] : r.failing_cases) s.counts.emplace_back(kind, n);
+  for (const auto& [relation, ulps] : r.metamorphic_max_ulps)
+    s.facts.emplace_back("metamorphic " + relation,
+                         ulps == UINT64_MAX ? std::string("non-finite vs finite") : std::to_string(ulps) + " ulps");
+  const nlohmann::json declared = conventions_json(impl.conv);  // items() refers to it
+  for (const auto& [key, value] : declared.items())
+    s.conventions.emplace_back(key, value.is_string() ? value.get<std::string>() : value.dump());
+  s.points = std::move(points);
+  for (const auto& f : r.failures) {
+    html_case c;
+    c.title = std::string(to_string(f.kind)) + (f.relation.empty() ? "" : " (" + f.relation + ")") + " on " +
+              f.family + ": case " + std::to_string(f.original.id) + ", " + bits_text(f.bits) +
+              " bits of error; inputs shrunk from " + std::to_string(f.bits_before) + " to " +
+              std::to_string(f.bits_after) + " bits";
+    c.details = {"original: " + case_json_line(f.original), "shrunk:   " + case_json_line(f.shrunk)};
+    c.reproducer = reproducer_command(f.shrunk, impl.conv);
+    s.worst.push_back(std::move(c));
+  }
+  page.sections.push_back(std::move(s));
+  return page;
+}
+
 int run_fuzz_command(const fuzz_options& o) {
   const implementation& impl = find_builtin_implementation(o.impl);
   fuzz_settings s;
@@ -122,6 +247,12 @@ int run_fuzz_command(const fuzz_options& o) {
   s.ulps_threshold = o.max_ulps;
   s.metamorphic = !o.no_metamorphic;
   s.jobs = o.jobs;
+  if (!o.shard_spec.empty()) s.part = parse_shard(o.shard_spec);
+  std::vector<html_point> points;
+  if (!o.html.empty())
+    s.on_case = [&](const test_case& c, const case_grade& g) {
+      points.push_back({closeness_to_degeneracy(c), g.max_bits, g.nonfinite > 0 || g.garbage > 0});
+    };
   if (!o.out_dir.empty()) {  // fail before a long run, not after it
     std::error_code ec;
     std::filesystem::create_directories(o.out_dir, ec);
@@ -144,14 +275,20 @@ int run_fuzz_command(const fuzz_options& o) {
     }
     write_file_atomically(dir / "report.json", report_json(r).dump(2) + "\n");
   }
-  if (o.json) std::cout << report_json(r).dump(2) << "\n";
-  else print_text(std::cout, r, impl);
+  if (!o.html.empty()) write_html(o.html, fuzz_page(o, impl, r, std::move(points)));
+  if (o.json) {
+    nlohmann::json doc = report_json(r);
+    if (!o.shard_spec.empty()) doc["shard"] = shard_json(s.part, run_json(o));
+    std::cout << doc.dump(2) << "\n";
+  } else {
+    print_text(std::cout, r, impl);
+  }
   return r.failures.empty() ? 0 : 1;
 }
 
 const command_registration registration{command{
     "fuzz", "differential fuzzing of an implementation against the exact oracle, failures shrunk",
-    [](CLI::App& app, const global_options&) -> std::function<int()> {
+    [](CLI::App& app, const global_options& globals) -> std::function<int()> {
       auto o = std::make_shared<fuzz_options>();
       app.add_option("--impl", o->impl, "implementation name (shadowproof check --list)")->required();
       auto seconds = app.add_option("--seconds", o->seconds, "run for this many seconds");
@@ -163,8 +300,26 @@ const command_registration registration{command{
       app.add_flag("--json", o->json, "print the report as JSON");
       app.add_flag("--no-metamorphic", o->no_metamorphic, "skip the metamorphic relations");
       add_jobs_option(app, o->jobs);
+      app.add_option("--shard", o->shard_spec, "run only shard i of N (cases n with n mod N = i); merge the "
+                                               "--json reports with `shadowproof merge`");
+      app.add_option("--html", o->html, "write a self-contained HTML report to this file");
+      o->command_line = globals.command_line;
       return [o] { return run_fuzz_command(*o); };
     }}};
+
+}  // namespace
+
+int merge_fuzz_shards(const std::vector<shard_report>& shards, const merge_options& o) {
+  std::vector<fuzz_report> reports;
+  for (const auto& s : shards) reports.push_back(report_from_json(s));
+  const implementation& impl = find_builtin_implementation(reports.front().impl);
+  const fuzz_report r = merge_fuzz_reports(reports, impl.op);
+  if (o.json) std::cout << report_json(r).dump(2) << "\n";
+  else print_text(std::cout, r, find_builtin_implementation(r.impl));
+  return r.failures.empty() ? 0 : 1;
+}
+
+namespace {
 
 }  // namespace
 }  // namespace shadowproof::cli

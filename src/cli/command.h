@@ -14,6 +14,7 @@ namespace shadowproof::cli {
 /// Options every subcommand shares.
 struct global_options {
   number_limits limits;
+  std::string command_line;  ///< as typed, quoted for a shell (shown in reports)
 };
 
 struct command {

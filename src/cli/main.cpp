@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "command.h"
+#include "html_report.h"
 #include "shadowproof/core/error.h"
 
 namespace shadowproof::cli {
@@ -23,6 +24,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", "shadowproof " SHADOWPROOF_VERSION, "print the version and exit");
   cli::global_options globals;
+  globals.command_line = cli::shell_command_line(argc, argv);
   app.add_option("--max-bits", globals.limits.max_bits,
                  "largest numerator/denominator of any input number, in bits")
       ->capture_default_str();

@@ -21,6 +21,7 @@ _shadowproof() {
       "/fuzz") path="${path}/${word}" ;;
       "/grade") path="${path}/${word}" ;;
       "/help") path="${path}/${word}" ;;
+      "/merge") path="${path}/${word}" ;;
       "/normal-matrix") path="${path}/${word}" ;;
       "/project") path="${path}/${word}" ;;
       "/reflect") path="${path}/${word}" ;;
@@ -28,10 +29,10 @@ _shadowproof() {
     esac
   done
   case "${path}" in
-    "") words="--help -h --version --max-bits camera cases check clip demo depth-precision exact explain fuzz grade help normal-matrix project reflect shadow" ;;
+    "") words="--help -h --version --max-bits camera cases check clip demo depth-precision exact explain fuzz grade help merge normal-matrix project reflect shadow" ;;
     "/camera") words="--help -h --fovy --degrees --aspect --near --far --infinite-far --convention --eye --target --up --handedness --json" ;;
     "/cases") words="--help -h --op --type --count --seed --class --directional --point-lights --unit-normal --symmetric --clamps-behind-receiver --convention" ;;
-    "/check") words="--help -h --impl --op --cases --class --seed --json --wide --svg --input --max-ulps --fail-on --list" ;;
+    "/check") words="--help -h --impl --op --cases --class --seed --json --wide --svg --input --max-ulps --fail-on --list --shard --html" ;;
     "/clip") words="--help -h --json --svg --compare-float --max-vertices --max-faces --max-face-vertices --max-json-depth --max-json-values --max-file-bytes" ;;
     "/demo") words="--help -h --svg" ;;
     "/depth-precision") words="--help -h --left --right --bottom --top --near --far --cot-half-fovy --aspect --cot-theta --cot-phi --convention --infinite-far --handedness --from --to --format --at --json --svg" ;;
@@ -41,9 +42,10 @@ _shadowproof() {
     "/explain/perspective") words="--help -h --near --far --left --right --bottom --top --convention --infinite-far" ;;
     "/explain/reflect") words="--help -h --plane" ;;
     "/explain/shadow") words="--help -h --plane --light --point" ;;
-    "/fuzz") words="--help -h --impl --seconds --cases --seed --max-ulps --out --json --no-metamorphic" ;;
-    "/grade") words="--help -h --name --layout --vectors --light --depth --homogeneous --sentinel --clamps-behind-receiver --symmetric --convention --json --wide --max-ulps --fail-on" ;;
+    "/fuzz") words="--help -h --impl --seconds --cases --seed --max-ulps --out --json --no-metamorphic --shard --html" ;;
+    "/grade") words="--help -h --name --layout --vectors --light --depth --homogeneous --sentinel --clamps-behind-receiver --symmetric --convention --json --wide --max-ulps --fail-on --shard --html" ;;
     "/help") words="--help -h --all --man --bash-completion" ;;
+    "/merge") words="--help -h --json --wide" ;;
     "/normal-matrix") words="--help -h --matrix --normal --json" ;;
     "/project") words="--help -h --left --right --bottom --top --near --far --cot-half-fovy --aspect --cot-theta --cot-phi --convention --infinite-far --handedness --point --json" ;;
     "/reflect") words="--help -h --plane --point --json" ;;

@@ -7,6 +7,7 @@
 #include <limits>
 #include <set>
 #include <sstream>
+#include <tuple>
 
 #include "shadowproof/core/error.h"
 #include "shadowproof/core/number.h"
@@ -203,7 +204,47 @@ std::uint64_t disagreement(const std::vector<double>& expected, const std::vecto
   return worst;
 }
 
+// Misclassifications are told apart by the pair of classes (a shadow taken for an anti-shadow
+// is a different bug from a shadow taken for a point on the receiver).
+std::string key_of(failure_kind kind, const std::string& family, const std::string& relation, const case_grade& g) {
+  if (kind == failure_kind::metamorphic) return "metamorphic/" + family + "/" + relation;
+  if (kind == failure_kind::misclassified && g.exact_class && g.got_class)
+    return "misclassified/" + std::string(to_string(*g.exact_class)) + "->" + std::string(to_string(*g.got_class));
+  return std::string(to_string(kind)) + "/" + family;
+}
+
 }  // namespace
+
+std::string failure_key(const fuzz_failure& f) {
+  return key_of(f.kind, base_family(f.family), f.relation, f.original_grade);
+}
+
+fuzz_report merge_fuzz_reports(const std::vector<fuzz_report>& shards, operation op) {
+  fuzz_report merged;
+  std::map<std::string, const fuzz_failure*> first;  // by key, the failure of the lowest case id
+  for (const auto& r : shards) {
+    merged.impl = r.impl;
+    merged.cases += r.cases;
+    for (const auto& [kind, n] : r.failing_cases) merged.failing_cases[kind] += n;
+    for (const auto& [relation, ulps] : r.metamorphic_max_ulps)
+      merged.metamorphic_max_ulps[relation] = std::max(merged.metamorphic_max_ulps[relation], ulps);
+    for (const auto& f : r.failures) {
+      const auto [it, fresh] = first.emplace(failure_key(f), &f);
+      if (!fresh && f.original.id < it->second->original.id) it->second = &f;
+    }
+  }
+  // The unsharded run records a case's failures by kind (enum order), then its metamorphic ones
+  // in the order of the relations.
+  const auto relations = metamorphic_relations(op);
+  const auto rank = [&](const fuzz_failure& f) {
+    const auto r = std::find(relations.begin(), relations.end(), f.relation);
+    return std::make_tuple(f.original.id, static_cast<int>(f.kind), r - relations.begin());
+  };
+  for (const auto& [key, f] : first) merged.failures.push_back(*f);
+  std::sort(merged.failures.begin(), merged.failures.end(),
+            [&](const fuzz_failure& a, const fuzz_failure& b) { return rank(a) < rank(b); });
+  return merged;
+}
 
 std::string_view to_string(failure_kind k) {
   switch (k) {
@@ -289,6 +330,7 @@ fuzz_report run_fuzz(const implementation& impl, const fuzz_settings& settings,
   auto record_case = [&](const generated_case<double>& g, const test_case& c, const case_grade& grade,
                          const std::vector<std::optional<std::uint64_t>>& violation) {
     ++report.cases;
+    if (settings.on_case) settings.on_case(c, grade);
     const std::string family = base_family(g.family);
 
     // Shrinks the case while `fails_on` holds for the simpler inputs and records the failure.
@@ -324,12 +366,7 @@ fuzz_report run_fuzz(const implementation& impl, const fuzz_settings& settings,
 
     for (failure_kind kind : kinds_of(grade, settings.ulps_threshold)) {
       ++report.failing_cases[std::string(to_string(kind))];
-      // Misclassifications are told apart by the pair of classes (shadow taken for an
-      // anti-shadow is a different bug from a shadow taken for a point on the receiver).
-      std::string key = std::string(to_string(kind)) + "/" + family;
-      if (kind == failure_kind::misclassified && grade.exact_class && grade.got_class)
-        key = "misclassified/" + std::string(to_string(*grade.exact_class)) + "->" + std::string(to_string(*grade.got_class));
-      if (!seen.insert(key).second) continue;
+      if (!seen.insert(key_of(kind, family, "", grade)).second) continue;
       record(kind, "", grade.max_bits, [&](const test_case& t) {
         const auto o = run(impl, t);
         return same_failure(grade, grade_case(t, impl.conv, o.data()), kind, settings.ulps_threshold);
@@ -342,7 +379,7 @@ fuzz_report run_fuzz(const implementation& impl, const fuzz_settings& settings,
       if (!v) continue;
       report.metamorphic_max_ulps[relation] = std::max(report.metamorphic_max_ulps[relation], *v);
       ++report.failing_cases["metamorphic"];
-      if (!seen.insert("metamorphic/" + family + "/" + relation).second) continue;
+      if (!seen.insert(key_of(failure_kind::metamorphic, family, relation, grade)).second) continue;
       record(failure_kind::metamorphic, relation,
              bits_of_error(*v == std::numeric_limits<std::uint64_t>::max() ? *v - 1 : *v), [&](const test_case& t) {
                return metamorphic_violation(impl, t, relation, settings.ulps_threshold).has_value();
@@ -368,12 +405,15 @@ fuzz_report run_fuzz(const implementation& impl, const fuzz_settings& settings,
     generated.clear();
     cases.clear();
     for (std::size_t k = 0; k < count; ++k) {
-      generated.push_back(generate());
-      cases.push_back(make_fuzz_case(generated.back(), impl, first + k));
+      const auto g = generate();  // drawn in every shard, so case n is the same whatever the shard count
+      if (!settings.part.contains(first + k)) continue;
+      generated.push_back(g);
+      cases.push_back(make_fuzz_case(g, impl, first + k));
     }
-    grades.assign(count, case_grade{});
-    violations.assign(count, {});
-    for_each_slice(count, settings.jobs, 64, [&](std::size_t begin, std::size_t end) {
+    const std::size_t mine = cases.size();
+    grades.assign(mine, case_grade{});
+    violations.assign(mine, {});
+    for_each_slice(mine, settings.jobs, 64, [&](std::size_t begin, std::size_t end) {
       for (std::size_t k = begin; k < end; ++k) {
         const auto out = run(impl, cases[k]);
         grades[k] = grade_case(cases[k], impl.conv, out.data());
@@ -381,7 +421,7 @@ fuzz_report run_fuzz(const implementation& impl, const fuzz_settings& settings,
           violations[k].push_back(metamorphic_violation(impl, cases[k], relation, settings.ulps_threshold));
       }
     });
-    for (std::size_t k = 0; k < count; ++k) record_case(generated[k], cases[k], grades[k], violations[k]);
+    for (std::size_t k = 0; k < mine; ++k) record_case(generated[k], cases[k], grades[k], violations[k]);
     first += count;
   }
   if (progress) progress(report.cases, report.failures.size());

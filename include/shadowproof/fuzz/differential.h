@@ -14,6 +14,7 @@
 #include "shadowproof/verify/implementation.h"
 #include "shadowproof/verify/cases.h"
 #include "shadowproof/verify/grade.h"
+#include "shadowproof/verify/shard.h"
 
 namespace shadowproof {
 
@@ -32,6 +33,11 @@ struct fuzz_settings {
   /// Threads that run and grade the cases (0: default_jobs()); the report is the same for
   /// any number. More than 1 calls impl.run from several threads at once.
   unsigned jobs = 1;
+  /// Only the cases of this shard are run (case n of the stream is drawn by every shard, so
+  /// each case is the same whatever the shard count; see shard).
+  shard part;
+  /// Called with every case run and its grade (for plots); may be empty.
+  std::function<void(const test_case&, const case_grade&)> on_case;
 };
 
 struct fuzz_failure {
@@ -58,6 +64,17 @@ struct fuzz_report {
 /// requirements. Exact families become `degenerate`, their ulp/2^-k neighbours
 /// `near_degenerate`, the rest `regular`.
 test_case make_fuzz_case(const generated_case<double>& g, const implementation& impl, std::uint64_t id);
+
+/// What makes failures the same bug: the kind and the base family of the original case (for a
+/// misclassification the pair of classes, for a metamorphic failure also the relation). A report
+/// keeps the first failure of each key.
+std::string failure_key(const fuzz_failure& f);
+
+/// The report of the whole run from the reports of its shards (any order): case and failure
+/// counts added, metamorphic maxima taken, and of each failure key the failure of the lowest
+/// case id kept, in the order of the unsharded run (by case id, then kind, then relation in
+/// metamorphic_relations order). Equal to the unsharded report for a run of a case count.
+fuzz_report merge_fuzz_reports(const std::vector<fuzz_report>& shards, operation op);
 
 /// Runs the campaign. `progress(cases, failures)` is called about once a second.
 fuzz_report run_fuzz(const implementation& impl, const fuzz_settings& settings,

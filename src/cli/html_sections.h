@@ -1,0 +1,31 @@
+#pragma once
+// The HTML report's section for one graded implementation (check) or outputs file (grade).
+#include <string>
+#include <vector>
+
+#include "html_report.h"
+#include "shadowproof/verify/conventions.h"
+#include "shadowproof/verify/grade.h"
+#include "shadowproof/verify/report.h"
+#include "verify_print.h"
+
+namespace shadowproof::cli {
+
+/// What one implementation's section shows.
+struct graded_run {
+  std::string name;
+  std::string origin;  ///< where the formula comes from (empty for grade)
+  operation op = operation::shadow_matrix;
+  scalar_type type = scalar_type::f32;
+  const conventions* conv = nullptr;
+  const grade_summary* summary = nullptr;
+  const std::vector<case_grade>* grades = nullptr;  ///< every case, for the plot
+  case_lookup lookup;
+  bool failed = false;
+};
+
+/// The section: verdict, counts per verdict, the plot of every case, the singled-out cases
+/// with their deciding output and reproducer, and the conventions.
+html_section graded_section(const graded_run& run);
+
+}  // namespace shadowproof::cli
