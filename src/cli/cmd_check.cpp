@@ -256,7 +256,9 @@ int print_check_report(const check_options& o, const check_report& report) {
                                 : std::to_string(report.given_cases) + " cases of " + o.input)
             << ", against the exact rational answer.\n"
             << "A case's verdict is that of its worst output, an implementation's that of its worst case\n"
-            << "(docs/verdicts.md); the table counts cases.\n\n";
+            << "(docs/verdicts.md); the table counts cases. Verdicts, best first: exact, faithful (1 ulp),\n"
+            << "stable (the problem's conditioning), unstable (the formula loses accuracy), range (over- or\n"
+            << "underflow), wrong, nonfinite, garbage.\n\n";
   print_verdict_table(std::cout, rows, style);
   bool first = true;
   for (const auto& x : report.results) {
@@ -281,6 +283,8 @@ int print_check_report(const check_options& o, const check_report& report) {
   if (gate.fail_on)
     std::cout << (verdict_failed ? "FAIL" : "PASS") << ": --fail-on " << to_string(*gate.fail_on)
               << (verdict_failed ? ": some case is at or past it\n" : ": every case is better\n");
+  std::cout << "\nNext: docs/tutorial-read-report.md reads this report line by line;\n"
+               "docs/tutorial-grade-cpp.md grades your own code.\n";
   return failed ? 1 : 0;
 }
 
