@@ -168,16 +168,6 @@ struct gates {
   bool verdict_reached(const grade_summary& s) const { return fail_on && reaches(s, *fail_on); }
 };
 
-std::optional<verdict> parse_fail_on(const std::string& text) {
-  if (text.empty()) return std::nullopt;
-  const auto v = verdict_from_string(text);
-  if (!v) {
-    std::string names;
-    for (verdict x : all_verdicts()) names += (names.empty() ? "" : ", ") + std::string(to_string(x));
-    throw error(errc::verify_unknown_verdict, "unknown --fail-on '" + text + "'; expected one of " + names);
-  }
-  return v;
-}
 
 // What a check report shows of one implementation, from its grades or merged from shards.
 struct check_result {

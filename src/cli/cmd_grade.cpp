@@ -96,16 +96,6 @@ conventions conventions_of(const grade_options& o) {
   return conv;
 }
 
-std::optional<verdict> parse_fail_on(const std::string& text) {
-  if (text.empty()) return std::nullopt;
-  const auto v = verdict_from_string(text);
-  if (!v) {
-    std::string names;
-    for (verdict x : all_verdicts()) names += (names.empty() ? "" : ", ") + std::string(to_string(x));
-    throw error(errc::verify_unknown_verdict, "unknown --fail-on '" + text + "'; expected one of " + names);
-  }
-  return v;
-}
 
 // What a grade report shows, from the grades or merged from shards.
 struct grade_report {

@@ -6,9 +6,22 @@
 #include <cstdio>
 #include <sstream>
 
+#include "shadowproof/core/error.h"
 #include "shadowproof/core/ulp.h"
 
 namespace shadowproof::cli {
+
+std::optional<verdict> parse_fail_on(const std::string& text) {
+  if (text.empty()) return std::nullopt;
+  const auto v = verdict_from_string(text);
+  if (!v) {
+    std::string names;
+    for (verdict x : all_verdicts()) names += (names.empty() ? "" : ", ") + std::string(to_string(x));
+    throw error(errc::verify_unknown_verdict, "unknown --fail-on '" + text + "'; expected one of " + names);
+  }
+  return v;
+}
+
 namespace {
 
 constexpr std::size_t count_width = 6;

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -17,6 +18,10 @@
 #include "shadowproof/verify/report.h"
 
 namespace shadowproof::cli {
+
+/// The verdict of `--fail-on TEXT` (nothing for an empty text); error verify.unknown_verdict
+/// naming the verdicts otherwise.
+std::optional<verdict> parse_fail_on(const std::string& text);
 
 /// How much a text report shows.
 struct report_style {

@@ -12,6 +12,7 @@
 #include "batch_ranges.h"
 #include "kernels/batch.h"
 #include "operation_table.h"
+#include "ulps_between.h"
 #include "shadowproof/core/error.h"
 #include "shadowproof/core/number.h"
 #include "shadowproof/core/ulp.h"
@@ -66,22 +67,7 @@ void store_reference(const detail::fast_reference& r, std::size_t i, std::size_t
   out.point_class[i] = r.cls ? static_cast<std::int8_t>(*r.cls) : std::int8_t(-1);
 }
 
-// ulp.h's ulp_distance without branches on the signs (oracle.cpp's ulps_between).
-template <class F>
-std::uint64_t ulps_between(F a, F b) {
-  using bits_t = std::conditional_t<std::is_same_v<F, float>, std::uint32_t, std::uint64_t>;
-  constexpr int shift = std::is_same_v<F, float> ? 31 : 63;
-  auto position = [](F x) {
-    bits_t raw;
-    std::memcpy(&raw, &x, sizeof raw);
-    const auto magnitude = static_cast<std::int64_t>(raw & ~(bits_t(1) << shift));
-    const std::int64_t negative = -static_cast<std::int64_t>(raw >> shift);  // 0 or −1
-    return (magnitude ^ negative) - negative;
-  };
-  const std::int64_t x = position(a), y = position(b);
-  const std::uint64_t d = static_cast<std::uint64_t>(x) - static_cast<std::uint64_t>(y);
-  return x >= y ? d : std::uint64_t(0) - d;
-}
+using detail::ulps_between;
 
 // One output, every case (grade_case's grade_output): ulps and flags.
 template <class F>

@@ -13,6 +13,7 @@
 #include "conditioning.h"
 #include "operation_table.h"
 #include "scale.h"
+#include "ulps_between.h"
 #include "shadowproof/core/error.h"
 #include "shadowproof/core/number.h"
 #include "shadowproof/core/ulp.h"
@@ -95,22 +96,7 @@ const std::array<double, 64> bits_table = [] {
 }();
 double bits_of(std::uint64_t ulps) { return ulps < bits_table.size() ? bits_table[ulps] : bits_of_error(ulps); }
 
-// ulp_distance without branches on the signs (the same count, ulp.h's definition).
-template <class F>
-std::uint64_t ulps_between(F a, F b) {
-  using bits_t = std::conditional_t<std::is_same_v<F, float>, std::uint32_t, std::uint64_t>;
-  constexpr int shift = std::is_same_v<F, float> ? 31 : 63;
-  auto position = [](F x) {
-    bits_t raw;
-    std::memcpy(&raw, &x, sizeof raw);
-    const auto magnitude = static_cast<std::int64_t>(raw & ~(bits_t(1) << shift));
-    const std::int64_t negative = -static_cast<std::int64_t>(raw >> shift);  // 0 or −1
-    return (magnitude ^ negative) - negative;
-  };
-  const std::int64_t x = position(a), y = position(b);
-  const std::uint64_t d = static_cast<std::uint64_t>(x) - static_cast<std::uint64_t>(y);
-  return x >= y ? d : std::uint64_t(0) - d;
-}
+using detail::ulps_between;
 
 template <class F>
 void grade_output(output_grade& g, double got_d, bool defined, F ref) {
