@@ -15,7 +15,8 @@ enum class builder { rh_no, lh_zo, rh_zo, infinite };
 
 template <class T, builder b>
 void perspective(const double* in, double* out) {
-  const inputs_as<T, 4> x(in);
+  // fovy, aspect, near, far; the infinite builder takes no far plane (three inputs).
+  const inputs_as<T, b == builder::infinite ? 3 : 4> x(in);
   glm::mat<4, 4, T, glm::defaultp> m;
   if constexpr (b == builder::rh_no) m = glm::perspective(x[0], x[1], x[2], x[3]);
   else if constexpr (b == builder::lh_zo) m = glm::perspectiveLH_ZO(x[0], x[1], x[2], x[3]);
