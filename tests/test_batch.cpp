@@ -90,7 +90,7 @@ TEST_CASE("batch grades are grade_case's, field for field, for every built-in im
   // With the AVX2 filter and column grader where the processor has them, and with the generic ones.
   std::size_t graded = 0;
   for (const implementation& impl : builtin_implementations()) {
-    const auto cases = generate_cases(impl.op, impl.type, 240, 31, std::nullopt, impl.conv);
+    const auto cases = generate_cases(impl.op, impl.type, 96, 31, std::nullopt, impl.conv);
     case_batch batch = make_batch(cases);
     run_implementation(impl, batch);
     perturb(batch, graded);

@@ -24,8 +24,8 @@ file(WRITE ${WORK}/outputs.jsonl "${outputs}")
 
 # Words are separated by '|' here (a ';' would flatten the list of commands).
 set(commands
-  "check|--impl|all|--cases|150|--seed|7"
-  "check|--impl|all|--cases|150|--seed|7|--json"
+  "check|--impl|all|--cases|48|--seed|7"
+  "check|--impl|all|--cases|48|--seed|7|--json"
   "grade|${WORK}/cases.jsonl|${WORK}/outputs.jsonl"
   "grade|${WORK}/cases.jsonl|${WORK}/outputs.jsonl|--json"
   "fuzz|--impl|seed003-ray-f32|--cases|3000|--seed|7"
