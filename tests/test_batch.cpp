@@ -109,7 +109,7 @@ TEST_CASE("batch grades are grade_case's, field for field, for every built-in im
     }
     CHECK(batch_counters.decided_by_intervals + batch_counters.fell_back_to_rationals == cases.size());
   }
-  CHECK(graded == builtin_implementations().size() * 240);
+  CHECK(graded == builtin_implementations().size() * 96);
 }
 
 TEST_CASE("batch references are the correctly rounded exact outputs, whichever path decides them", "[batch]") {
