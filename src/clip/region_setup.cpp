@@ -105,6 +105,16 @@ bool clip_setup::at_light(const point3& V) const {
   return !grazing() && point_light() && plane_value(height, V) == 1;
 }
 
+shadow_region clip_setup::empty_region() const {
+  shadow_region r;
+  r.chart = chart;
+  r.light = sc->light_source.l;
+  r.receiver_outer = receiver_outer;
+  r.receiver_holes = receiver_holes;
+  r.view_box = view_box;
+  return r;
+}
+
 std::vector<point3> clip_to_halfspace(const std::vector<point3>& poly, const vec4<rational>& h) {
   std::vector<point3> out;
   for (std::size_t i = 0; i < poly.size(); ++i) {

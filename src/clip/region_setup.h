@@ -53,6 +53,9 @@ struct clip_setup {
   std::vector<point3> clip(std::vector<point3> poly) const;
   /// True when V is a point light's position (f(V) = 1); only the cone's apex in the clip.
   bool at_light(const point3& V) const;
+  /// A region with this setup's chart, light, receiver and view box and nothing in it yet:
+  /// what both region builders start from.
+  shadow_region empty_region() const;
 };
 
 /// Validates the receiver (planar, simple rings, holes inside) in the chart of P and builds

@@ -233,12 +233,7 @@ shadow_region silhouette_region(const scene& s, const plane<rational>& P, const 
   validate_sizes(s, options.limits);
   case_set cases;
   const clip_setup setup = make_clip_setup(s, P, cases);
-  shadow_region r;
-  r.chart = setup.chart;
-  r.light = s.light_source.l;
-  r.receiver_outer = setup.receiver_outer;
-  r.receiver_holes = setup.receiver_holes;
-  r.view_box = setup.view_box;
+  shadow_region r = setup.empty_region();
 
   std::size_t total_faces = 0, done_faces = 0;
   for (const auto& c : s.casters) total_faces += c.faces.size();

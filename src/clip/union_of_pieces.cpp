@@ -67,12 +67,7 @@ shadow_region union_of_pieces_region(const scene& s, const plane<rational>& P, c
   validate_sizes(s, options.limits);
   case_set cases;
   const clip_setup setup = make_clip_setup(s, P, cases);
-  shadow_region r;
-  r.chart = setup.chart;
-  r.light = s.light_source.l;
-  r.receiver_outer = setup.receiver_outer;
-  r.receiver_holes = setup.receiver_holes;
-  r.view_box = setup.view_box;
+  shadow_region r = setup.empty_region();
 
   std::vector<std::vector<ring>> pieces(s.casters.size());
   std::vector<std::array<point2, 2>> degenerate;
