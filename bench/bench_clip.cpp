@@ -1,7 +1,11 @@
 // Exact shadow regions of meshes against Clipper's union of the same triangles, in one run.
 //
-//   bench_clip [--data DIR] [--quick] [--skip-meshes] [--only NAME]
-//   (--quick: without the 1M-triangle meshes; --skip-meshes: without the 1k-50k spheres and tori)
+//   bench_clip [--data DIR] [--quick] [--skip-meshes] [--only NAME] [--no-clipper]
+//   (--quick: without the 1M-triangle meshes; --skip-meshes: without the 1k-50k spheres and tori;
+//   --no-clipper: the exact runs only, for profiling them; no ratio is printed)
+//   bench_clip --write-off DIR
+//   (writes DIR/sphere-1M.off, the 1M-triangle sphere with its coordinates as exact decimals,
+//   and DIR/sphere-1M.json, its scene, for bench/bench_clip_cli.sh)
 //
 // Cases (each over a square receiver under a directional light):
 // - UV spheres and tori of about 1k, 10k, 50k and 1M triangles, vertices snapped to multiples
@@ -174,13 +178,44 @@ dmesh read_off_doubles(const std::string& path) {
 
 double plane_value_d(const bench_case& c, const std::array<double, 3>& p) { return p[static_cast<std::size_t>(c.up)] - c.height; }
 
-// The light-facing faces (n·l > 0 for the face's normal by its vertex order), by exact
-// arithmetic on the rational coordinates.
+// The light-facing faces (n·l > 0 for the face's normal by its vertex order): Newell's normal
+// in double with a forward error bound, exact rationals only when the bound cannot decide
+// (the snapped meshes never need them; a million faces in well under a second).
 std::vector<std::size_t> facing_faces(const bench_case& c, const dmesh& m, const std::vector<point3>& exact) {
   std::vector<std::size_t> out;
   const point3 l{exact_value(c.light[0]), exact_value(c.light[1]), exact_value(c.light[2])};
+  std::vector<std::array<double, 3>> v(exact.size());
+  std::vector<bool> exact_double(exact.size());
+  for (std::size_t i = 0; i < exact.size(); ++i)
+    for (std::size_t k = 0; k < 3; ++k) {
+      v[i][k] = exact[i][k].get_d();
+      exact_double[i] = (k == 0 || exact_double[i]) && rational(v[i][k]) == exact[i][k];
+    }
+  const auto& d = c.light;
+  const double eps = std::ldexp(1.0, -50);
   for (std::size_t f = 0; f < m.f.size(); ++f) {
     const auto& face = m.f[f];
+    // Σ a×b over the edges, then ·l: each term's rounding error is below eps times the sum
+    // of the absolute values (a loose bound for faces of fewer than 2^40 vertices).
+    double s = 0, bound = 0;
+    bool doubles = true;
+    for (std::size_t i = 0; i < face.size(); ++i) {
+      const auto &a = v[face[i]], &b = v[face[(i + 1) % face.size()]];
+      doubles = doubles && exact_double[face[i]];
+      const double t[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+      const double ta[3] = {std::fabs(a[1] * b[2]) + std::fabs(a[2] * b[1]), std::fabs(a[2] * b[0]) + std::fabs(a[0] * b[2]),
+                            std::fabs(a[0] * b[1]) + std::fabs(a[1] * b[0])};
+      for (int k = 0; k < 3; ++k) {
+        s += t[k] * d[static_cast<std::size_t>(k)];
+        bound += ta[k] * std::fabs(d[static_cast<std::size_t>(k)]);
+      }
+    }
+    bound *= eps * static_cast<double>(face.size() + 4);
+    if (doubles && s > bound) {
+      out.push_back(f);
+      continue;
+    }
+    if (doubles && s < -bound) continue;
     point3 n{rational(0), rational(0), rational(0)};
     for (std::size_t i = 0; i < face.size(); ++i) n = sum(n, cross(exact[face[i]], exact[face[(i + 1) % face.size()]]));
     if (dot(n, l) > 0) out.push_back(f);
@@ -374,19 +409,49 @@ result run_clipper(const bench_case& c, int reps, const std::string& off_path, i
       cpu_limit_s);
 }
 
+// The mesh as an OFF file with exact decimals (a multiple of 2^-16 has at most 16 decimal
+// places, and printf prints the exact expansion), and a scene JSON with the bench's receiver
+// and light.
+void write_off(const bench_case& c, const std::string& dir, const std::string& stem) {
+  const dmesh m = c.make();
+  std::FILE* off = std::fopen((dir + "/" + stem + ".off").c_str(), "w");
+  if (!off) {
+    std::fprintf(stderr, "bench_clip: cannot write %s/%s.off\n", dir.c_str(), stem.c_str());
+    std::exit(1);
+  }
+  std::fprintf(off, "OFF\n%zu %zu 0\n", m.v.size(), m.f.size());
+  for (const auto& p : m.v) std::fprintf(off, "%.16f %.16f %.16f\n", p[0], p[1], p[2]);
+  for (const auto& f : m.f) {
+    std::fprintf(off, "%zu", f.size());
+    for (auto i : f) std::fprintf(off, " %zu", i);
+    std::fprintf(off, "\n");
+  }
+  std::fclose(off);
+  std::ofstream json(dir + "/" + stem + ".json");
+  const double h = c.half;
+  json << "{\n  \"receiver\": {\"polygon\": [[" << -h << ", " << -h << ", 0], [" << h << ", " << -h << ", 0], [" << h
+       << ", " << h << ", 0], [" << -h << ", " << h << ", 0]]},\n  \"light\": [" << c.light[0] << ", " << c.light[1] << ", "
+       << c.light[2] << ", " << c.light[3] << "],\n  \"casters\": [{\"mesh\": {\"file\": \"" << stem << ".off\"}}]\n}\n";
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   std::string data = std::getenv("SHADOWPROOF_BENCH_DATA") ? std::getenv("SHADOWPROOF_BENCH_DATA") : "";
-  bool quick = false, skip_meshes = false;
+  bool quick = false, skip_meshes = false, clipper = true;
   std::string only;
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--data") == 0 && i + 1 < argc) data = argv[++i];
     else if (std::strcmp(argv[i], "--quick") == 0) quick = true;
     else if (std::strcmp(argv[i], "--only") == 0 && i + 1 < argc) only = argv[++i];
     else if (std::strcmp(argv[i], "--skip-meshes") == 0) skip_meshes = true;
+    else if (std::strcmp(argv[i], "--no-clipper") == 0) clipper = false;
+    else if (std::strcmp(argv[i], "--write-off") == 0 && i + 1 < argc) {
+      write_off({"sphere 1M", [] { return uv_sphere(708, 707); }}, argv[i + 1], "sphere-1M");
+      return 0;
+    }
     else {
-      std::fprintf(stderr, "usage: bench_clip [--data DIR] [--quick] [--skip-meshes] [--only NAME]\n");
+      std::fprintf(stderr, "usage: bench_clip [--data DIR] [--quick] [--skip-meshes] [--only NAME] [--no-clipper] | --write-off DIR\n");
       return 2;
     }
   }
@@ -400,7 +465,7 @@ int main(int argc, char** argv) {
     cases.push_back({"torus 50k", [] { return torus(250, 100); }});
   }
   if (!quick) {
-    cases.push_back({"sphere 1M", [] { return uv_sphere(708, 707); }});
+    cases.push_back({"sphere 1M", [] { return uv_sphere(708, 707); }});  // as --write-off
     cases.push_back({"torus 1M", [] { return torus(1000, 500); }});
   }
   cases.push_back({"soup 10k", [] { return soup(10000); }});
@@ -438,6 +503,13 @@ int main(int argc, char** argv) {
     const result whole = run_exact(c, false, reps, files[i]);
     // Clipper's union slows down badly with many shared edges: one run, at most 15 CPU minutes.
     const int clip_limit = large ? 900 : 600;
+    if (!clipper) {
+      std::printf("| %s | %zu | %zu | %zu | %.1f wall, %.1f CPU | %.1f wall, %.1f CPU | - | - | - | %.0f | - | %.6g | - |\n",
+                  c.name.c_str(), whole.faces, front.faces, whole.silhouette, front.wall_ms, front.cpu_ms, whole.wall_ms,
+                  whole.cpu_ms, whole.maxrss_kb / 1024.0, whole.area);
+      std::fflush(stdout);
+      continue;
+    }
     const result clip = run_clipper(c, large ? 1 : reps, files[i], clip_limit);
     std::printf("| %s | %zu | %zu | %zu | %.1f wall, %.1f CPU | %.1f wall, %.1f CPU | ", c.name.c_str(), whole.faces,
                 front.faces, whole.silhouette, front.wall_ms, front.cpu_ms, whole.wall_ms, whole.cpu_ms);

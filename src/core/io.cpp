@@ -4,6 +4,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -20,6 +21,10 @@ std::string read_file(const std::filesystem::path& path, std::size_t max_bytes) 
   std::ifstream in(path, std::ios::binary);
   if (!in) throw error(errc::io_cannot_read, "cannot read " + path.string() + ": " + std::strerror(errno));
   std::string content;
+  // One allocation for a regular file (its size, up to the limit): appending to a growing
+  // string copied a 50 MB mesh several times over.
+  const auto size = std::filesystem::file_size(path, ec);
+  if (!ec) content.reserve(static_cast<std::size_t>(std::min<std::uintmax_t>(size, max_bytes)) + 1);
   char buffer[1 << 16];
   while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
     content.append(buffer, static_cast<std::size_t>(in.gcount()));
