@@ -9,7 +9,7 @@
 #include <algorithm>
 #include <iterator>
 #include <list>
-#include <map>
+#include <numeric>
 #include <tuple>
 
 #include "kernel.h"
@@ -229,41 +229,56 @@ bool ccw_before(const point2& a, const point2& x, const point2& y) {
 // clockwise from it, which keeps to the piece on its left. The cycles do not depend on how
 // the input walks were chosen or where they start.
 std::vector<std::vector<point2>> component_cycles(const std::vector<std::vector<point2>>& walks) {
-  std::map<point2, std::vector<point2>> out_edges;  // vertex -> targets of its outgoing edges
-  std::size_t edges = 0;
+  // Every vertex numbered once, in lexicographic order (one sort of the corners; the walk
+  // then runs on numbers and compares points only where the boundary touches itself).
+  std::vector<const point2*> corners;
   for (const auto& w : walks)
-    for (std::size_t i = 0; i < w.size(); ++i) {
-      out_edges[w[i]].push_back(w[(i + 1) % w.size()]);
+    for (const auto& p : w) corners.push_back(&p);
+  std::vector<std::size_t> order(corners.size());
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return *corners[x] < *corners[y]; });
+  std::vector<std::size_t> id(corners.size());
+  std::vector<const point2*> point_of;
+  for (auto k : order) {
+    if (point_of.empty() || *point_of.back() != *corners[k]) point_of.push_back(corners[k]);
+    id[k] = point_of.size() - 1;
+  }
+  std::vector<std::vector<std::size_t>> out_edges(point_of.size());  // vertex -> targets of its outgoing edges
+  std::size_t edges = 0;
+  for (std::size_t w = 0, base = 0; w < walks.size(); base += walks[w].size(), ++w)
+    for (std::size_t i = 0; i < walks[w].size(); ++i) {
+      out_edges[id[base + i]].push_back(id[base + (i + 1) % walks[w].size()]);
       ++edges;
     }
   // Successor of the edge u -> v.
-  const auto next = [&](const point2& u, const point2& v) -> std::size_t {
-    const auto& targets = out_edges.at(v);
+  const auto next = [&](std::size_t u, std::size_t v) -> std::size_t {
+    const auto& targets = out_edges[v];
     if (targets.size() == 1) return 0;
-    const point2 back{u[0] - v[0], u[1] - v[1]};
+    const point2 &pu = *point_of[u], &pv = *point_of[v];
+    const point2 back{pu[0] - pv[0], pu[1] - pv[1]};
     std::size_t best = 0;
     for (std::size_t k = 1; k < targets.size(); ++k) {
-      const point2 dk{targets[k][0] - v[0], targets[k][1] - v[1]};
-      const point2 db{targets[best][0] - v[0], targets[best][1] - v[1]};
+      const point2 &tk = *point_of[targets[k]], &tb = *point_of[targets[best]];
+      const point2 dk{tk[0] - pv[0], tk[1] - pv[1]};
+      const point2 db{tb[0] - pv[0], tb[1] - pv[1]};
       if (ccw_before(back, db, dk)) best = k;  // the largest counter-clockwise angle
     }
     return best;
   };
-  std::map<point2, std::vector<bool>> used;
-  for (const auto& [v, targets] : out_edges) used[v].assign(targets.size(), false);
+  std::vector<std::vector<bool>> used(out_edges.size());
+  for (std::size_t v = 0; v < out_edges.size(); ++v) used[v].assign(out_edges[v].size(), false);
   std::vector<std::vector<point2>> cycles;
   std::size_t walked = 0;
-  for (const auto& [v0, targets0] : out_edges)
-    for (std::size_t k0 = 0; k0 < targets0.size(); ++k0) {
+  for (std::size_t v0 = 0; v0 < out_edges.size(); ++v0)
+    for (std::size_t k0 = 0; k0 < out_edges[v0].size(); ++k0) {
       if (used[v0][k0]) continue;
       std::vector<point2> cycle;
-      point2 u = v0;
-      std::size_t k = k0;
+      std::size_t u = v0, k = k0;
       while (!used[u][k]) {
         used[u][k] = true;
         if (++walked > edges) throw internal_error("region boundary cycles do not close");
-        cycle.push_back(u);
-        const point2 v = out_edges.at(u)[k];
+        cycle.push_back(*point_of[u]);
+        const std::size_t v = out_edges[u][k];
         k = next(u, v);
         u = v;
       }

@@ -8,6 +8,7 @@
 #include <CGAL/Arrangement_2.h>
 
 #include <deque>
+#include <optional>
 #include <numeric>
 
 #include "builders.h"
@@ -107,58 +108,39 @@ void assign_windings(arrangement& arr) {
   }
 }
 
-// The arrangement's vertices as rationals, each converted once (lazy exact numbers are
-// slow to evaluate one operation at a time), indexed by the vertices' data.
-std::vector<point2> vertex_points(arrangement& arr) {
-  std::vector<point2> points;
-  points.reserve(arr.number_of_vertices());
-  for (auto v = arr.vertices_begin(); v != arr.vertices_end(); ++v) {
-    v->data().index = points.size();
-    points.push_back(to_point2(v->point()));
+// The arrangement's vertices as rationals, each converted once and only when asked for:
+// the exact value of an intersection point is costly to force, and only the vertices on the
+// region's boundary and on its zero-area pieces are ever asked for.
+class exact_points {
+ public:
+  explicit exact_points(arrangement& arr) {
+    std::size_t i = 0;
+    for (auto v = arr.vertices_begin(); v != arr.vertices_end(); ++v) v->data().index = i++;
+    points_.resize(i);
   }
-  return points;
-}
-
-// Twice the signed area enclosed by one boundary cycle (shoelace, exact).
-template <class Circulator>
-void twice_ccb_area(const std::vector<point2>& p, Circulator first, std::vector<rational>& terms) {
-  auto h = first;
-  do {
-    const point2& a = p[h->source()->data().index];
-    const point2& b = p[h->target()->data().index];
-    terms.push_back(a[0] * b[1] - a[1] * b[0]);
-  } while (++h != first);
-}
-
-// Twice the area of every bounded face with `in(face)`, indexed by face id (0 elsewhere).
-template <class In>
-std::vector<rational> twice_face_areas(const arrangement& arr, const std::vector<point2>& p, In in) {
-  std::vector<rational> out(arr.number_of_faces());
-  for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f) {
-    if (f->is_unbounded() || !in(f)) continue;
-    std::vector<rational> terms;
-    twice_ccb_area(p, f->outer_ccb(), terms);
-    for (auto h = f->inner_ccbs_begin(); h != f->inner_ccbs_end(); ++h) twice_ccb_area(p, *h, terms);
-    out[f->data().id] = balanced_sum(std::move(terms));
+  template <class Vertex>
+  const point2& operator()(const Vertex& v) {
+    auto& p = points_[v->data().index];
+    if (!p) p = to_point2(v->point());
+    return *p;
   }
-  return out;
-}
 
-// The sum of the areas of the faces with `in(face)`.
-template <class In>
-rational area_of(const arrangement& arr, const std::vector<rational>& twice_areas, In in) {
-  std::vector<rational> terms;
-  for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f)
-    if (!f->is_unbounded() && in(f)) terms.push_back(twice_areas[f->data().id]);
-  return balanced_sum(std::move(terms)) / 2;
-}
+ private:
+  std::vector<std::optional<point2>> points_;
+};
+
+// The polygons with holes of a region and its area (the sum of its rings' signed areas).
+struct region_rings {
+  std::vector<ring_with_holes> polygons;
+  rational area{0};
+};
 
 // The boundary of the region of faces with `in(face)`: its polygons with holes, read off the
 // arrangement as if every edge with the region on both sides were removed. A boundary
 // half-edge has the region on its left only; the next one along the merged face is found by
 // turning around the target vertex past half-edges interior to the region.
 template <class In>
-std::vector<ring_with_holes> region_boundary(arrangement& arr, const std::vector<point2>& points, In in) {
+region_rings region_boundary(arrangement& arr, exact_points& points, In in) {
   const auto boundary = [&](const halfedge_handle& h) { return in(h->face()) && !in(h->twin()->face()); };
   // Faces of one merged face share a component.
   std::vector<std::size_t> parent(arr.number_of_faces());
@@ -179,7 +161,7 @@ std::vector<ring_with_holes> region_boundary(arrangement& arr, const std::vector
     std::size_t steps = 0;
     do {
       h->data() = 1;
-      r.push_back(points[h->source()->data().index]);
+      r.push_back(points(h->source()));
       halfedge_handle n = h->next();
       while (!boundary(n)) n = n->twin()->next();
       h = n;
@@ -189,19 +171,25 @@ std::vector<ring_with_holes> region_boundary(arrangement& arr, const std::vector
   }
   // One counter-clockwise outer ring per merged face, its clockwise rings are its holes.
   std::vector<std::ptrdiff_t> outer_of(arr.number_of_faces(), -1);
-  std::vector<ring_with_holes> polygons;
-  for (auto& [component, r] : rings)
-    if (sgn(signed_area(r)) > 0) {
+  region_rings out;
+  std::vector<rational> areas;
+  areas.reserve(rings.size());
+  for (const auto& entry : rings) areas.push_back(signed_area(entry.second));
+  for (std::size_t i = 0; i < rings.size(); ++i)
+    if (sgn(areas[i]) > 0) {
+      auto& [component, r] = rings[i];
       if (outer_of[component] >= 0) throw internal_error("a merged shadow face has two outer boundaries");
-      outer_of[component] = static_cast<std::ptrdiff_t>(polygons.size());
-      polygons.push_back({std::move(r), {}});
+      outer_of[component] = static_cast<std::ptrdiff_t>(out.polygons.size());
+      out.polygons.push_back({std::move(r), {}});
     }
-  for (auto& [component, r] : rings)
-    if (!r.empty() && sgn(signed_area(r)) < 0) {
+  for (std::size_t i = 0; i < rings.size(); ++i)
+    if (sgn(areas[i]) < 0) {
+      auto& [component, r] = rings[i];
       if (outer_of[component] < 0) throw internal_error("a shadow hole has no outer boundary");
-      polygons[static_cast<std::size_t>(outer_of[component])].second.push_back(std::move(r));
+      out.polygons[static_cast<std::size_t>(outer_of[component])].second.push_back(std::move(r));
     }
-  return polygons;
+  out.area = balanced_sum(std::move(areas));
+  return out;
 }
 
 // The faces around vertex v (its face when isolated).
@@ -269,31 +257,34 @@ shadow_region silhouette_region(const scene& s, const plane<rational>& P, const 
   CGAL::insert(arr, curves.begin(), curves.end());
   for (const auto& p : degenerate_points) CGAL::insert_point(arr, to_cpoint(p))->data().degenerate_point = true;
   assign_windings(arr);
-  const std::vector<point2> points = vertex_points(arr);
+  exact_points points(arr);
 
   const auto in_shadow = [](const auto& f) { return f->data().shadow > 0; };
   const auto in_receiver = [](const auto& f) { return f->data().receiver > 0; };
   const auto in_result = [&](const auto& f) { return in_shadow(f) && in_receiver(f); };
-  const std::vector<rational> twice_areas = twice_face_areas(arr, points, in_shadow);  // result ⊆ shadow
-
-  const rational all_area = area_of(arr, twice_areas, in_shadow);
-  if (options.detect_overlap && s.casters.size() > 1) {
-    rational sum = 0;
+  // Areas are summed over boundary rings only: no exact value of a vertex inside the region.
+  const bool overlap = options.detect_overlap && s.casters.size() > 1;
+  std::optional<region_rings> shadow_rings;
+  if (overlap || options.keep_projected) shadow_rings = region_boundary(arr, points, in_shadow);
+  if (overlap) {
+    std::vector<rational> areas;
     for (const auto& chain : chains) {
       std::vector<xcurve> own;
       add_chain(own, chain);
       arrangement one;
       CGAL::insert(one, own.begin(), own.end());
       assign_windings(one);
-      sum += area_of(one, twice_face_areas(one, vertex_points(one), in_shadow), in_shadow);
+      exact_points own_points(one);
+      areas.push_back(region_boundary(one, own_points, in_shadow).area);
     }
-    if (sum != all_area) cases.insert(shadow_case::shadows_overlap);
+    if (balanced_sum(std::move(areas)) != shadow_rings->area) cases.insert(shadow_case::shadows_overlap);
   }
   for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f)
     if (in_shadow(f) && !in_receiver(f)) cases.insert(shadow_case::shadow_outside_receiver);
-  r.chart_area = area_of(arr, twice_areas, in_result);
+  region_rings result_rings = region_boundary(arr, points, in_result);
+  r.chart_area = result_rings.area;
   r.area_squared = r.chart_area * r.chart_area * r.chart.area_scale_squared;
-  r.polygons = canonical_polygons(region_boundary(arr, points, in_result), r.chart);
+  r.polygons = canonical_polygons(std::move(result_rings.polygons), r.chart);
 
   // Zero-area pieces in the closed receiver and outside the closed result, and contacts of
   // the shadow's boundary with the receiver's boundary outside the closed result.
@@ -317,7 +308,7 @@ shadow_region silhouette_region(const scene& s, const plane<rational>& P, const 
     const bool shadow_edge = in_shadow(f) != in_shadow(g), receiver_edge = in_receiver(f) != in_receiver(g);
     const bool from_caster = h->curve().data().degenerate;
     if (!(from_caster || (shadow_edge && receiver_edge)) || !keep_edge(h)) continue;
-    kept.push_back({points[h->source()->data().index], points[h->target()->data().index]});
+    kept.push_back({points(h->source()), points(h->target())});
     if (shadow_edge && receiver_edge) contact = true;
   }
   for (auto v = arr.vertices_begin(); v != arr.vertices_end(); ++v) {
@@ -334,7 +325,7 @@ shadow_region silhouette_region(const scene& s, const plane<rational>& P, const 
     }
     const bool touching = shadow_edge && receiver_edge;
     if (!(from_caster || touching) || !keep_vertex(v)) continue;
-    const point2& p = points[v->data().index];
+    const point2& p = points(v);
     kept.push_back({p, p});
     if (touching) contact = true;
   }
@@ -345,7 +336,7 @@ shadow_region silhouette_region(const scene& s, const plane<rational>& P, const 
   if (r.polygons.empty() && r.degenerate.empty()) cases.insert(shadow_case::empty);
 
   if (options.keep_projected) {
-    for (const auto& p : canonical_polygons(region_boundary(arr, points, in_shadow), r.chart)) {
+    for (const auto& p : canonical_polygons(std::move(shadow_rings->polygons), r.chart)) {
       r.projected_loops.push_back(p.outer);
       for (const auto& h : p.holes) r.projected_loops.push_back(h);
     }
