@@ -773,16 +773,48 @@ TEST_CASE("silhouette and union-of-pieces builders give the identical region on 
 }
 
 TEST_CASE("silhouette and union-of-pieces builders give the identical region on random meshes and soups") {
-  // SHADOWPROOF_CLIP_SWEEP=N runs N scenes instead of 1200 (docs/clipping.md).
-  std::size_t scenes = 1200;
-  if (const char* n = std::getenv("SHADOWPROOF_CLIP_SWEEP")) scenes = static_cast<std::size_t>(std::stoull(n));
+  // 1,000 small scenes (at most 2 casters of about 8 faces each). SHADOWPROOF_CLIP_SWEEP=N
+  // runs N scenes of the full size instead (at most 3 casters of about 16 faces; docs/clipping.md).
+  std::size_t scenes = 1000, casters = 2, faces = 8;
+  if (const char* n = std::getenv("SHADOWPROOF_CLIP_SWEEP")) {
+    scenes = static_cast<std::size_t>(std::stoull(n));
+    casters = 3;
+    faces = 16;
+  }
   mt_source src{std::mt19937_64(20261201)};
   std::size_t compared = 0;
   for (std::size_t i = 0; i < scenes; ++i) {
-    const scene s = generate_clip_scene(src);
+    const scene s = generate_clip_scene(src, casters, faces);
     compared += static_cast<std::size_t>(compare_builders(s, "random scene " + std::to_string(i)));
   }
   CHECK(compared >= scenes * 7 / 10);  // the rest: random non-simple polygons, rejected alike
+}
+
+TEST_CASE("silhouette and union-of-pieces builders give the identical region on heavily overlapping soups") {
+  // 40 soups of 12 to 24 triangles with vertices on a 5 × 5 grid at heights 1 to 3 over the
+  // receiver [-4, 4]² in z = 0: every point of the soup's shadow is covered several times,
+  // edges cross and overlap, vertices coincide, some triangles are collinear or edge-on.
+  mt_source src{std::mt19937_64(20261202)};
+  std::size_t compared = 0;
+  for (int i = 0; i < 40; ++i) {
+    scene s;
+    s.receiver.outer.vertices = {{rational(-4), rational(-4), rational(0)}, {rational(4), rational(-4), rational(0)},
+                                 {rational(4), rational(4), rational(0)}, {rational(-4), rational(4), rational(0)}};
+    const long lx = detail::pick(src, -2, 2), ly = detail::pick(src, -2, 2);
+    s.light_source = src.below(2) == 0 ? make_light<rational>(lx, ly, detail::pick(src, 1, 4), 0)
+                                       : make_light<rational>(lx, ly, detail::pick(src, 5, 8), 1);
+    caster c;
+    c.name = "/casters/0/mesh";
+    const std::size_t n = 12 + static_cast<std::size_t>(src.below(13));
+    for (std::size_t t = 0; t < n; ++t) {
+      for (int k = 0; k < 3; ++k)
+        c.vertices.push_back({rational(detail::pick(src, -2, 2)), rational(detail::pick(src, -2, 2)), rational(detail::pick(src, 1, 3))});
+      c.faces.push_back({3 * t, 3 * t + 1, 3 * t + 2});
+    }
+    s.casters.push_back(std::move(c));
+    compared += static_cast<std::size_t>(compare_builders(s, "overlapping soup " + std::to_string(i)));
+  }
+  CHECK(compared == 40);  // repeated or collinear vertices are legal in a mesh face
 }
 
 TEST_CASE("light on the receiver plane: only the casters' footprint in the plane shades") {

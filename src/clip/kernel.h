@@ -52,6 +52,19 @@ inline ft to_ft(const rational& q) { return to_field<ft>(q); }
 inline rational to_q(const ft& x) { return from_field<ft>(x); }
 
 inline cpoint to_cpoint(const point2& p) { return cpoint(to_ft(p[0]), to_ft(p[1])); }
-inline point2 to_point2(const cpoint& p) { return {to_q(p.x()), to_q(p.y())}; }
+/// The rational point equal to p. With the lazy kernel the point's exact value is forced
+/// once and read directly: p.x() and p.y() would each build and force a new lazy number.
+/// (A template, so that only the branch of the kernel in use is instantiated.)
+template <class P = cpoint>
+point2 to_point2(const P& p) {
+  if constexpr (std::is_same_v<kernel, CGAL::Exact_predicates_exact_constructions_kernel>) {
+    const auto& e = CGAL::exact(p);
+    using et = std::decay_t<decltype(e.x())>;
+    if constexpr (std::is_same_v<et, rational>) return {e.x(), e.y()};
+    else return {rational(e.x().mpq()), rational(e.y().mpq())};
+  } else {
+    return {to_q(p.x()), to_q(p.y())};
+  }
+}
 
 }  // namespace shadowproof::detail
