@@ -8,8 +8,8 @@
 #include <CGAL/Arrangement_2.h>
 
 #include <deque>
-#include <optional>
 #include <numeric>
+#include <optional>
 
 #include "builders.h"
 #include "chain.h"
