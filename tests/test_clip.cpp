@@ -792,12 +792,12 @@ TEST_CASE("silhouette and union-of-pieces builders give the identical region on 
 }
 
 TEST_CASE("silhouette and union-of-pieces builders give the identical region on heavily overlapping soups") {
-  // 40 soups of 12 to 24 triangles with vertices on a 5 × 5 grid at heights 1 to 3 over the
+  // 12 soups of 8 to 12 triangles with vertices on a 5 × 5 grid at heights 1 to 3 over the
   // receiver [-4, 4]² in z = 0: every point of the soup's shadow is covered several times,
   // edges cross and overlap, vertices coincide, some triangles are collinear or edge-on.
   mt_source src{std::mt19937_64(20261202)};
   std::size_t compared = 0;
-  for (int i = 0; i < 40; ++i) {
+  for (int i = 0; i < 12; ++i) {
     scene s;
     s.receiver.outer.vertices = {{rational(-4), rational(-4), rational(0)}, {rational(4), rational(-4), rational(0)},
                                  {rational(4), rational(4), rational(0)}, {rational(-4), rational(4), rational(0)}};
@@ -806,7 +806,7 @@ TEST_CASE("silhouette and union-of-pieces builders give the identical region on 
                                        : make_light<rational>(lx, ly, detail::pick(src, 5, 8), 1);
     caster c;
     c.name = "/casters/0/mesh";
-    const std::size_t n = 12 + static_cast<std::size_t>(src.below(13));
+    const std::size_t n = 8 + static_cast<std::size_t>(src.below(5));
     for (std::size_t t = 0; t < n; ++t) {
       for (int k = 0; k < 3; ++k)
         c.vertices.push_back({rational(detail::pick(src, -2, 2)), rational(detail::pick(src, -2, 2)), rational(detail::pick(src, 1, 3))});
@@ -815,7 +815,7 @@ TEST_CASE("silhouette and union-of-pieces builders give the identical region on 
     s.casters.push_back(std::move(c));
     compared += static_cast<std::size_t>(compare_builders(s, "overlapping soup " + std::to_string(i)));
   }
-  CHECK(compared == 40);  // repeated or collinear vertices are legal in a mesh face
+  CHECK(compared == 12);  // repeated or collinear vertices are legal in a mesh face
 }
 
 TEST_CASE("light on the receiver plane: only the casters' footprint in the plane shades") {
