@@ -217,7 +217,9 @@ html_page grade_page(const grade_options& o, const grade_report& r, const std::v
   g.type = r.type;
   g.conv = &r.conv;
   g.summary = &r.all;
-  g.grades = &grades;
+  point_cloud plot;
+  for (const auto& x : grades) add_to_plot(plot, r.lookup(x.id), x);
+  g.plot = &plot;
   g.lookup = r.lookup;
   g.failed = grade_failed(o, r.all);
   page.sections.push_back(graded_section(g));
