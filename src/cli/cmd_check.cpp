@@ -88,6 +88,7 @@ struct impl_tally {
 // What a run keeps of each case besides the summaries.
 struct kept_per_case {
   bool verdicts = false, positions = false, plot = false;
+  bool class_summaries = false;  // only --json prints the summary of each input class
 };
 
 // A chunk of one implementation's cases (a shard's share of them), where each stood in the
@@ -109,7 +110,10 @@ void merge_into(std::optional<mergeable_summary>& acc, const std::vector<case_gr
   }
   std::vector<case_grade> candidates = singled_out_cases(acc->summary);
   for (auto& g : singled_out_cases(part.summary)) candidates.push_back(std::move(g));
-  acc = merge_summaries({*acc, part}, candidates, keep_worst);
+  std::vector<mergeable_summary> parts;
+  parts.push_back(std::move(*acc));
+  parts.push_back(std::move(part));
+  acc = merge_summaries(parts, candidates, keep_worst);
 }
 
 // Adds a graded chunk to the tally, then keeps only the cases the summaries now single out.
@@ -117,6 +121,7 @@ void add_chunk(impl_tally& t, const case_chunk& chunk, const kept_per_case& keep
   t.graded += chunk.grades.size();
   merge_into(t.whole, chunk.grades, 3);
   for (input_class cls : all_input_classes()) {
+    if (!keep.class_summaries) break;
     std::vector<case_grade> of_class;
     for (const auto& g : chunk.grades)
       if (g.cls == cls) of_class.push_back(g);
@@ -187,6 +192,13 @@ impl_tally tally_implementation(const implementation& impl, const check_options&
     current = std::move(next);
   }
   if (have_previous) add_chunk(t, previous, keep);
+  // The distribution of ulps behind the medians (one entry per distinct number of ulps) is
+  // printed only in a shard's report; the others need only the medians taken from it.
+  if (!keep.positions) {
+    if (t.whole) t.whole->ulps_counts.clear();
+    for (auto& [cls, m] : t.by_class)
+      if (m) m->ulps_counts.clear();
+  }
   return t;
 }
 
@@ -514,6 +526,7 @@ int run_check(const check_options& o) {
   keep.verdicts = o.json;
   keep.positions = o.json && !o.shard_spec.empty();
   keep.plot = !o.svg.empty() || !o.html.empty();
+  keep.class_summaries = o.json;
   const unsigned jobs = o.jobs == 0 ? default_jobs() : o.jobs;
   std::vector<impl_tally> runs;
   // Generating, running, grading and summarising, wall-clock.
