@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <future>
+#include <mutex>
 #include <set>
 #include <algorithm>
 #include <cmath>
@@ -533,10 +534,20 @@ int run_check(const check_options& o) {
   const auto start = std::chrono::steady_clock::now();
   {
     progress_bar bar(chosen.size());
-    for (const implementation* impl : chosen) {
-      runs.push_back(tally_implementation(*impl, o, given, class_filter, part, jobs, keep));
-      bar.step(impl->name);
-    }
+    std::mutex bar_lock;
+    // Many implementations: each thread takes whole implementations in turn, generating,
+    // grading and summarising its cases alone, so no thread ever waits for another. Few: the
+    // threads share each implementation's chunks. Each tally depends on its implementation
+    // alone, so the report is the same either way.
+    const bool across = jobs > 1 && chosen.size() >= 4 * static_cast<std::size_t>(jobs);
+    runs.resize(chosen.size());
+    for_each_slice(chosen.size(), across ? jobs : 1, 1, [&](std::size_t first, std::size_t end) {
+      for (std::size_t i = first; i < end; ++i) {
+        runs[i] = tally_implementation(*chosen[i], o, given, class_filter, part, across ? 1 : jobs, keep);
+        const std::lock_guard<std::mutex> guard(bar_lock);
+        bar.step(chosen[i]->name);
+      }
+    });
   }
 
   check_report report;
