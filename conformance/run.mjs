@@ -12,7 +12,7 @@
 // grade). --sample grades a few cases of every adapter and fails when any adapter cannot be
 // run or graded (what CI runs); the full run writes the table.
 import { execFileSync, spawnSync } from "node:child_process";
-import { existsSync, mkdtempSync, writeFileSync, rmSync } from "node:fs";
+import { copyFileSync, existsSync, mkdtempSync, writeFileSync, rmSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join, dirname } from "node:path";
 import { fileURLToPath } from "node:url";
@@ -113,10 +113,19 @@ function addRow(row, graded) {
               maxUlps: Math.max(0, ...summaries.map((s) => s.max_ulps)), maxBits: Math.max(0, ...summaries.map((s) => s.max_bits)) });
 }
 
+// Adapters with the same operation, type and conventions grade the same cases: `shadowproof
+// cases` runs once for each such combination and the file is copied for the others.
+const casesWritten = new Map();
 function writeCases(path, op, type, conventions, extra = []) {
   const argv = ["cases", "--op", op, "--type", type, "--count", String(cases), "--seed", seed, ...extra];
   for (const c of conventions) argv.push("--convention", c);
+  const key = argv.join("\u0000");
+  if (casesWritten.has(key)) {
+    copyFileSync(casesWritten.get(key), path);
+    return;
+  }
   writeFileSync(path, run(shadowproof, argv));
+  casesWritten.set(key, path);
 }
 
 // JavaScript: one node process per library and float type (Babylon's matrix precision is a

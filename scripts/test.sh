@@ -19,12 +19,9 @@ ctest --test-dir "$build" --output-on-failure -j"$(nproc)"
 
 # The oracle's exact arithmetic on an FMA target (preset fma, -march=x86-64-v3 -O2): the
 # error-free transformations' own tests and the agreement tests of the dedicated kernels with
-# the rational oracle, where the compiler could contract a*b+c. Needs a CPU with AVX2 and FMA;
-# skipped (and said so) on one without.
-if grep -qw fma /proc/cpuinfo && grep -qw avx2 /proc/cpuinfo; then
-  (cd "$root" && cmake --preset fma -B "$root/build/fma" >/dev/null)
-  cmake --build "$root/build/fma" -j"$(nproc)" --target test_verify test_oracle_kernels test_batch test_number test_ulp
-  ctest --test-dir "$root/build/fma" -R "^test_(verify|oracle_kernels|batch|number|ulp):" --output-on-failure -j"$(nproc)"
-else
-  echo "test.sh: this CPU has no FMA/AVX2; the fma preset's tests were not run"
+# the rational oracle, where the compiler could contract a*b+c. A second build of the library:
+# run with SHADOWPROOF_TEST_FMA=1 (scripts/test-fma.sh alone runs just this part). Needs a CPU
+# with AVX2 and FMA.
+if [ "${SHADOWPROOF_TEST_FMA:-0}" = 1 ]; then
+  "$root/scripts/test-fma.sh"
 fi

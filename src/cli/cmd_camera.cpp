@@ -189,7 +189,7 @@ int run_camera(const camera_options& o, const global_options& g) {
   return 0;
 }
 
-const command_registration registration{command{
+const command_registration camera_registration{command{
     "camera",
     "camera matrices with irrational entries, correctly rounded: perspective from a field-of-view angle, look-at "
     "view, target-to placement",

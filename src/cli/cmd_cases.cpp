@@ -64,7 +64,7 @@ int run_cases(const cases_options& o) {
   return 0;
 }
 
-const command_registration reg{command{
+const command_registration cases_registration{command{
     "cases", "write JSON-lines test cases (hex floats + exact decimals) for an implementation in any language",
     [](CLI::App& app, const global_options&) {
       auto o = std::make_shared<cases_options>();

@@ -588,7 +588,7 @@ int run_check(const check_options& o) {
   return print_check_report(o, report);
 }
 
-const command_registration reg{command{
+const command_registration check_registration{command{
     "check", "grade built-in float implementations (seed formulas, GLM, Eigen, Irrlicht, Ogre) against the exact oracle",
     [](CLI::App& app, const global_options& globals) {
       auto o = std::make_shared<check_options>();

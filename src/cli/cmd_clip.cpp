@@ -25,10 +25,10 @@ nlohmann::json exact3(const point3& p) { return nlohmann::json::array({to_string
 
 // A progress bar on stderr for runs longer than half a second, when stderr is a terminal;
 // redrawn at most ten times a second and erased at the end.
-class progress_bar {
+class stage_progress_bar {
  public:
-  progress_bar() : enabled_(::isatty(2) != 0), start_(std::chrono::steady_clock::now()) {}
-  ~progress_bar() {
+  stage_progress_bar() : enabled_(::isatty(2) != 0), start_(std::chrono::steady_clock::now()) {}
+  ~stage_progress_bar() {
     if (drawn_) std::cerr << "\r\033[K" << std::flush;
   }
   void operator()(std::string_view stage, double fraction) {
@@ -153,7 +153,7 @@ static const command_registration clip_registration{command{
         options.method = args->method == "union"        ? clip_method::union_of_pieces
                          : args->method == "silhouette" ? clip_method::silhouette
                                                         : clip_method::automatic;
-        auto bar = std::make_shared<progress_bar>();
+        auto bar = std::make_shared<stage_progress_bar>();
         options.progress = [bar](std::string_view stage, double fraction) { (*bar)(stage, fraction); };
         const shadow_region r = compute_shadow_region(s, options);
         bar.reset();

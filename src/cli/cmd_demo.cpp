@@ -92,7 +92,7 @@ void run_clip_demo(const std::string& svg_path) {
   }
 }
 
-const command_registration registration{command{
+const command_registration demo_registration{command{
     "demo", "run the bundled example scene: matrices, classes and exact checks",
     [](CLI::App& app, const global_options&) -> std::function<int()> {
       auto svg_path = std::make_shared<std::string>();

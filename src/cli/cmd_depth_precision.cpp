@@ -198,7 +198,7 @@ int run_depth_precision(const depth_precision_options& o, const global_options& 
   return 0;
 }
 
-const command_registration registration{command{
+const command_registration depth_precision_registration{command{
     "depth-precision",
     "exact depth-buffer precision of a projection over an eye-depth interval: distinct stored "
     "values and eye-space gaps, gl vs d3d vs reverse-z",

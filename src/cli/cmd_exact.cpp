@@ -84,7 +84,7 @@ int run_exact(const exact_options& o, const global_options& g) {
   return 0;
 }
 
-const command_registration reg{command{
+const command_registration exact_registration{command{
     "exact", "the exact answer of one graded case, output by output, correctly rounded (the reports' reproducer)",
     [](CLI::App& app, const global_options& g) {
       auto o = std::make_shared<exact_options>();

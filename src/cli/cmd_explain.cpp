@@ -178,7 +178,7 @@ void add_window(CLI::App* app, explain_options& o) {
   add_number(app, o, "--top", "y of the top edge");
 }
 
-const command_registration registration{command{
+const command_registration explain_registration{command{
     "explain", "the derivation of a matrix with your numbers, every step evaluated exactly, and its figure (--svg)",
     [](CLI::App& app, const global_options& g) -> std::function<int()> {
       auto o = std::make_shared<explain_options>();

@@ -286,7 +286,7 @@ int run_fuzz_command(const fuzz_options& o) {
   return r.failures.empty() ? 0 : 1;
 }
 
-const command_registration registration{command{
+const command_registration fuzz_registration{command{
     "fuzz", "differential fuzzing of an implementation against the exact oracle, failures shrunk",
     [](CLI::App& app, const global_options& globals) -> std::function<int()> {
       auto o = std::make_shared<fuzz_options>();

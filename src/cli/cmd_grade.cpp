@@ -372,7 +372,7 @@ int run_grade(const grade_options& o) {
   return print_grade_report(o, r);
 }
 
-const command_registration reg{command{
+const command_registration grade_registration{command{
     "grade", "grade a program's outputs (JSON lines) against the exact answers for `shadowproof cases` input",
     [](CLI::App& app, const global_options& globals) {
       auto o = std::make_shared<grade_options>();

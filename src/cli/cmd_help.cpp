@@ -48,7 +48,7 @@ int run_help(const help_options& o, const CLI::App& root) {
   return 0;
 }
 
-const command_registration registration{command{
+const command_registration help_registration{command{
     "help", "the help of a command (help explain shadow), of every command (--all), the man page or the bash completion",
     [](CLI::App& app, const global_options&) -> std::function<int()> {
       auto o = std::make_shared<help_options>();

@@ -23,7 +23,7 @@ int run_merge(const merge_command_options& o) {
                                  "', which merge does not know (check, grade, fuzz)");
 }
 
-const command_registration reg{command{
+const command_registration merge_registration{command{
     "merge", "combine the JSON reports of the shards of a check, grade or fuzz run into the run's report",
     [](CLI::App& app, const global_options&) {
       auto o = std::make_shared<merge_command_options>();

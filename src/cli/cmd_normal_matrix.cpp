@@ -60,7 +60,7 @@ int run_normal_matrix(const normal_matrix_options& o, const global_options& g) {
   return 0;
 }
 
-const command_registration registration{command{
+const command_registration normal_matrix_registration{command{
     "normal-matrix", "exact normal matrix G = (M⁻¹)ᵀ, its adjugate form and the images of normals",
     [](CLI::App& app, const global_options& g) -> std::function<int()> {
       auto o = std::make_shared<normal_matrix_options>();

@@ -66,7 +66,7 @@ int run_project(const project_options& o, const global_options& g) {
   return 0;
 }
 
-const command_registration registration{command{
+const command_registration project_registration{command{
     "project",
     "exact projection matrix (ortho, oblique, frustum, perspective, games101) in the gl, d3d or "
     "reverse-z depth convention, and the exact images of points",

@@ -42,7 +42,7 @@ int run_reflect(const reflect_options& o, const global_options& g) {
   return 0;
 }
 
-const command_registration registration{command{
+const command_registration reflect_registration{command{
     "reflect", "exact planar reflection matrix about a plane and the images of points",
     [](CLI::App& app, const global_options& g) -> std::function<int()> {
       auto o = std::make_shared<reflect_options>();

@@ -47,7 +47,7 @@ int run_shadow(const shadow_options& o, const global_options& g) {
   return 0;
 }
 
-const command_registration registration{command{
+const command_registration shadow_registration{command{
     "shadow", "exact planar shadow matrix M = (P·L) I - L Pᵀ and the image and class of points",
     [](CLI::App& app, const global_options& g) -> std::function<int()> {
       auto o = std::make_shared<shadow_options>();

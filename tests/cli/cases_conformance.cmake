@@ -84,6 +84,6 @@ if(SHADOWPROOF_NODE)
     COMMAND ${SHADOWPROOF_NODE} ${PROJECT_SOURCE_DIR}/conformance/run.mjs --sample --skip-when-not-set-up
             --shadowproof $<TARGET_FILE:shadowproof_cli> --vk-build ${SHADOWPROOF_CONFORMANCE_VK_BUILD})
   set_tests_properties("conformance: every adapter of the table runs and is graded (a sample)" PROPERTIES
-    LABELS conformance SKIP_RETURN_CODE 77 TIMEOUT 900 RUN_SERIAL TRUE
+    LABELS conformance SKIP_RETURN_CODE 77 TIMEOUT 900
     ENVIRONMENT "VK_ICD_FILENAMES=/usr/share/vulkan/icd.d/lvp_icd.x86_64.json")
 endif()

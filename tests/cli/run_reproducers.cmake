@@ -1,5 +1,6 @@
-# Runs a report command and then every reproducer it prints: each command after an
-# "exact answer:" line (continued with backslashes, as a shell reads it) must exit 0.
+# Runs a report command and then every distinct reproducer it prints: each command after an
+# "exact answer:" line (continued with backslashes, as a shell reads it) must exit 0. A command
+# the report prints twice (two implementations failing on the same case) runs once.
 # -DEXE=<shadowproof> -DARGS="check;--impl;all;..." [-DMIN=<least number of reproducers>]
 string(REPLACE "\\;" ";" ARGS "${ARGS}")
 get_filename_component(dir "${EXE}" DIRECTORY)
@@ -15,12 +16,20 @@ string(REPLACE "\n" ";" lines "${out}")
 set(collecting OFF)
 set(command "")
 set(count 0)
+set(seen "")
 find_program(SH sh REQUIRED)
 foreach(line IN LISTS lines)
   string(REPLACE "<bs>" "\\" line "${line}")
   if(collecting)
     string(APPEND command "${line}\n")
     if(NOT line MATCHES "\\\\$")
+      string(SHA1 digest "${command}")
+      if(digest IN_LIST seen)
+        set(collecting OFF)
+        set(command "")
+        continue()
+      endif()
+      list(APPEND seen ${digest})
       file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/reproducer.sh "PATH='${dir}':\"$PATH\"\n${command}")
       execute_process(COMMAND ${SH} ${CMAKE_CURRENT_BINARY_DIR}/reproducer.sh
         RESULT_VARIABLE rc OUTPUT_VARIABLE rout ERROR_VARIABLE rerr TIMEOUT 60)
@@ -36,6 +45,6 @@ foreach(line IN LISTS lines)
   endif()
 endforeach()
 if(DEFINED MIN AND count LESS MIN)
-  message(FATAL_ERROR "only ${count} reproducers in the report (expected at least ${MIN})")
+  message(FATAL_ERROR "only ${count} distinct reproducers in the report (expected at least ${MIN})")
 endif()
-message(STATUS "${count} reproducers ran")
+message(STATUS "${count} distinct reproducers ran")

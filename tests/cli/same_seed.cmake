@@ -5,8 +5,8 @@ file(MAKE_DIRECTORY ${WORK})
 # Words are separated by '|' here (a ';' would flatten the list of commands).
 set(commands
   "cases|--op|shadow-point|--type|f32|--count|300|--seed|7"
-  "check|--impl|all|--cases|120|--seed|7|--json"
-  "fuzz|--impl|seed003-ray-f32|--cases|3000|--seed|7|--json")
+  "check|--impl|all|--cases|40|--seed|7|--json"
+  "fuzz|--impl|seed003-ray-f32|--cases|1000|--seed|7|--json")
 set(k 0)
 foreach(words IN LISTS commands)
   string(REPLACE "|" ";" cmd "${words}")

@@ -6,11 +6,15 @@ file(MAKE_DIRECTORY ${WORK})
 # Words are separated by '|' (a ';' would flatten the list of runs).
 set(runs
   "check|--impl|seed003-ray-f32|--cases|300|--seed|5"
-  "check|--impl|all|--op|shadow-matrix|--cases|90|--seed|2|--max-ulps|4"
+  "check|--impl|all|--op|shadow-matrix|--cases|60|--seed|2|--max-ulps|4"
   "grade|${DATA}/shard_cases.jsonl|${DATA}/shard_outputs.jsonl"
   "fuzz|--impl|seed001-shader-f32|--cases|400|--seed|1")
-# Shard counts, and for each the order the files are given to merge (a permutation).
-set(splits "1:0" "3:2,0,1" "7:6,3,0,5,1,4,2")
+# For each run, the shard counts and the order the files are given to merge (a permutation):
+# 1 shard, 3 shards, and 7 shards where a shard may hold a single case.
+set(splits_0 "1:0" "3:2,0,1" "7:6,3,0,5,1,4,2")
+set(splits_1 "3:2,0,1")
+set(splits_2 "1:0" "3:2,0,1" "7:6,3,0,5,1,4,2")
+set(splits_3 "3:1,2,0" "7:6,3,0,5,1,4,2")
 set(k 0)
 foreach(words IN LISTS runs)
   string(REPLACE "|" ";" cmd "${words}")
@@ -29,7 +33,7 @@ foreach(words IN LISTS runs)
   if(size EQUAL 0)
     message(FATAL_ERROR "'${shown}' printed nothing")
   endif()
-  foreach(split IN LISTS splits)
+  foreach(split IN LISTS splits_${k})
     string(REPLACE ":" ";" parts "${split}")
     list(GET parts 0 n)
     list(GET parts 1 order)
@@ -62,6 +66,6 @@ foreach(words IN LISTS runs)
       endif()
     endforeach()
   endforeach()
-  message(STATUS "'${shown}': 1, 3 and 7 shards merge to the unsharded report")
+  message(STATUS "'${shown}': shards ${splits_${k}} merge to the unsharded report")
   math(EXPR k "${k} + 1")
 endforeach()
