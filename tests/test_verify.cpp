@@ -840,3 +840,20 @@ TEST_CASE("the double kernels agree exactly with the all-rational oracle", "[ver
   CHECK(graded == expected_kernel_cases(120));
   CHECK(counters.decided_by_intervals > 9 * counters.fell_back_to_rationals);
 }
+
+TEST_CASE("a case stream read in chunks of any size yields the cases of one generate_cases call", "[verify]") {
+  for (const auto& [op, type] : {std::pair{shadowproof::operation::shadow_point, shadowproof::scalar_type::f32},
+                                 std::pair{shadowproof::operation::look_at, shadowproof::scalar_type::f64}}) {
+    const auto whole = shadowproof::generate_cases(op, type, 40, 5);
+    shadowproof::case_stream stream(op, type, 5);
+    std::vector<shadowproof::test_case> chunked;
+    for (std::size_t n : {1, 0, 13, 26})
+      for (auto& c : stream.next(n)) chunked.push_back(std::move(c));
+    REQUIRE(chunked.size() == whole.size());
+    for (std::size_t i = 0; i < whole.size(); ++i) {
+      CHECK(chunked[i].id == i);
+      CHECK(chunked[i].cls == whole[i].cls);
+      CHECK(chunked[i].inputs == whole[i].inputs);
+    }
+  }
+}

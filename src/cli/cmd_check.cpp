@@ -3,6 +3,9 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <future>
+#include <mutex>
+#include <set>
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -27,6 +30,7 @@
 #include "shadowproof/verify/parallel.h"
 #include "shadowproof/verify/protocol.h"
 #include "shadowproof/verify/report.h"
+#include "shadowproof/verify/summary_merge.h"
 #include "html_sections.h"
 #include "shard_report.h"
 #include "verify_print.h"
@@ -60,19 +64,144 @@ nlohmann::json run_json(const check_options& o) {
           {"fail_on", o.fail_on}};
 }
 
-// One implementation's cases and grades.
-struct impl_run {
-  const implementation* impl;
-  std::vector<test_case> cases;
-  std::vector<case_grade> grades;
-  std::vector<std::size_t> positions;  // of each case in the whole run (a shard has some of them)
+// One implementation's run, summarised chunk by chunk as its grades arrive: what the report
+// prints (counts, histograms, the distribution of ulps behind the median, the cases the
+// summaries single out) and never every case, so memory does not grow with --cases. Only what a
+// report prints per case is kept per case, and only for that report: the verdicts of --json and
+// the positions of a shard's --json.
+struct impl_tally {
+  const implementation* impl = nullptr;
+  std::optional<mergeable_summary> whole;                                    // 3 worst cases
+  std::map<input_class, std::optional<mergeable_summary>> by_class;         // 1 worst case each
+  std::map<std::uint64_t, test_case> singled;  // the cases the summaries single out, by id
+  std::vector<verdict> verdicts;               // of every case in order (--json only)
+  std::vector<std::size_t> positions;          // of each case in the whole run (a shard's --json only)
+  point_cloud plot;                            // --svg and --html only
+  oracle_counters counters;
+  std::size_t graded = 0;
   const test_case& by_id(std::uint64_t id) const {
-    if (id < cases.size() && cases[id].id == id) return cases[id];  // generated cases: id = index
-    for (const auto& c : cases)
-      if (c.id == id) return c;
-    throw internal_error("a grade names a case that was not graded");
+    const auto it = singled.find(id);
+    if (it == singled.end()) throw internal_error("a summary names a case that was not kept");
+    return it->second;
   }
 };
+
+// What a run keeps of each case besides the summaries.
+struct kept_per_case {
+  bool verdicts = false, positions = false, plot = false;
+  bool class_summaries = false;  // only --json prints the summary of each input class
+};
+
+// A chunk of one implementation's cases (a shard's share of them), where each stood in the
+// whole run, and their grades.
+struct case_chunk {
+  std::vector<test_case> cases;
+  std::vector<std::size_t> positions;
+  std::vector<case_grade> grades;
+};
+
+// acc becomes the summary of its grades and `grades`: by merge_summaries, whose result for any
+// partition of a set of grades is the summary of the whole set.
+void merge_into(std::optional<mergeable_summary>& acc, const std::vector<case_grade>& grades, std::size_t keep_worst) {
+  if (grades.empty()) return;
+  mergeable_summary part = summarize_mergeable(grades, keep_worst);
+  if (!acc) {
+    acc = std::move(part);
+    return;
+  }
+  std::vector<case_grade> candidates = singled_out_cases(acc->summary);
+  for (auto& g : singled_out_cases(part.summary)) candidates.push_back(std::move(g));
+  std::vector<mergeable_summary> parts;
+  parts.push_back(std::move(*acc));
+  parts.push_back(std::move(part));
+  acc = merge_summaries(parts, candidates, keep_worst);
+}
+
+// Adds a graded chunk to the tally, then keeps only the cases the summaries now single out.
+void add_chunk(impl_tally& t, const case_chunk& chunk, const kept_per_case& keep) {
+  t.graded += chunk.grades.size();
+  merge_into(t.whole, chunk.grades, 3);
+  for (input_class cls : all_input_classes()) {
+    if (!keep.class_summaries) break;
+    std::vector<case_grade> of_class;
+    for (const auto& g : chunk.grades)
+      if (g.cls == cls) of_class.push_back(g);
+    if (!of_class.empty()) merge_into(t.by_class[cls], of_class, 1);
+  }
+  std::set<std::uint64_t> ids;
+  auto note = [&](const std::optional<mergeable_summary>& m) {
+    if (m)
+      for (const auto& g : singled_out_cases(m->summary)) ids.insert(g.id);
+  };
+  note(t.whole);
+  for (const auto& [cls, m] : t.by_class) note(m);
+  for (auto it = t.singled.begin(); it != t.singled.end();) it = ids.count(it->first) ? std::next(it) : t.singled.erase(it);
+  for (const auto& c : chunk.cases)
+    if (ids.count(c.id)) t.singled.emplace(c.id, c);
+  for (std::size_t k = 0; k < chunk.grades.size(); ++k) {
+    if (keep.verdicts) t.verdicts.push_back(chunk.grades[k].v);
+    if (keep.positions) t.positions.push_back(chunk.positions[k]);
+    if (keep.plot) add_to_plot(t.plot, chunk.cases[k], chunk.grades[k]);
+  }
+}
+
+// Cases are generated, graded and summarised this many at a time.
+constexpr std::size_t chunk_size = 8192;
+
+// Runs and grades one implementation on `total` cases (generated from the seed, or `given`),
+// chunk by chunk: while `jobs` threads run and grade a chunk, one more thread summarises the
+// previous chunk and generates the next, so neither waits on the other. The tally is the same
+// for any jobs: chunks are generated from the one stream in order and summarised in order.
+impl_tally tally_implementation(const implementation& impl, const check_options& o, const std::vector<test_case>& given,
+                                std::optional<input_class> class_filter, const shard& part, unsigned jobs,
+                                const kept_per_case& keep) {
+  impl_tally t;
+  t.impl = &impl;
+  std::optional<case_stream> stream;
+  if (given.empty()) stream.emplace(impl.op, impl.type, o.seed, class_filter, impl.conv);
+  const std::size_t total = given.empty() ? o.cases : given.size();
+  auto chunk_at = [&](std::size_t first) {
+    case_chunk chunk;
+    const std::size_t n = std::min(chunk_size, total - first);
+    std::vector<test_case> cases =
+        stream ? stream->next(n)
+               : std::vector<test_case>(given.begin() + static_cast<std::ptrdiff_t>(first),
+                                        given.begin() + static_cast<std::ptrdiff_t>(first + n));
+    for (std::size_t k = 0; k < n; ++k)
+      if (part.contains(cases[k].id)) {  // a shard keeps its own cases
+        chunk.cases.push_back(std::move(cases[k]));
+        chunk.positions.push_back(first + k);
+      }
+    return chunk;
+  };
+  const bool helper = jobs > 1;  // with one job, everything on the one thread, in order
+  case_chunk current = chunk_at(0), previous;
+  bool have_previous = false;
+  for (std::size_t first = 0; first < total; first += chunk_size) {
+    const std::size_t next_first = first + chunk_size;
+    auto prepare = [&, next_first, summarise = have_previous] {
+      if (summarise) add_chunk(t, previous, keep);
+      return next_first < total ? chunk_at(next_first) : case_chunk{};
+    };
+    std::future<case_chunk> upcoming;
+    if (helper) upcoming = std::async(std::launch::async, prepare);
+    // The helper touches neither the current chunk nor the counters.
+    current.grades = run_and_grade_in_parallel(impl, current.cases, jobs, oracle_mode::filtered, &t.counters);
+    case_chunk next = helper ? upcoming.get() : prepare();
+    previous = std::move(current);
+    have_previous = true;
+    current = std::move(next);
+  }
+  if (have_previous) add_chunk(t, previous, keep);
+  // The distribution of ulps behind the medians (one entry per distinct number of ulps) is
+  // printed only in a shard's report; the others need only the medians taken from it.
+  if (!keep.positions) {
+    if (t.whole) t.whole->ulps_counts.clear();
+    for (auto& [cls, m] : t.by_class)
+      if (m) m->ulps_counts.clear();
+  }
+  return t;
+}
 
 // The cases of a case file (`shadowproof cases` format), for reproducing a finding with a
 // built-in implementation.
@@ -109,15 +238,19 @@ class progress_bar {
 // Bits of error (max over a case's outputs) against log2 closeness to degeneracy, one colour
 // per implementation. Exactly degenerate cases (closeness −inf) sit in a band at the left;
 // cases with a non-finite or garbage output sit in a band at the top.
-void write_svg(const std::string& path, const std::vector<impl_run>& runs) {
+void write_svg(const std::string& path, const std::vector<impl_tally>& runs) {
   const double W = 960, left = 70, right = 250, top = 40, bottom = 60;
   const double H = std::max(560.0, top + 14.0 * static_cast<double>(runs.size()) + 30);  // room for the legend
   double xmin = 0, xmax = 0;
-  for (const auto& r : runs)
-    for (const auto& c : r.cases) {
-      const double x = c.closeness;
-      if (std::isfinite(x)) { xmin = std::min(xmin, x); xmax = std::max(xmax, x); }
-    }
+  std::vector<std::vector<html_point>> points;
+  for (const auto& r : runs) {
+    points.push_back(r.plot.points());
+    for (const auto& p : points.back())
+      if (std::isfinite(p.closeness)) {
+        xmin = std::min(xmin, p.closeness);
+        xmax = std::max(xmax, p.closeness);
+      }
+  }
   xmin = std::floor(xmin / 10) * 10 - 10;  // room for the exactly-degenerate band
   xmax = std::max(xmax, 0.0) + 2;
   const double ymax = 70;
@@ -143,12 +276,13 @@ void write_svg(const std::string& path, const std::vector<impl_run>& runs) {
   for (std::size_t i = 0; i < runs.size(); ++i) {
     const char* colour = palette[i % (sizeof palette / sizeof *palette)];
     const auto& r = runs[i];
-    for (std::size_t k = 0; k < r.cases.size(); ++k) {
-      const auto& g = r.grades[k];
-      double x = r.cases[k].closeness;
-      if (!std::isfinite(x)) x = xmin + 4;
-      const double y = (g.nonfinite || g.garbage) ? 66 : std::min(g.max_bits, 64.0);
-      f.circle(sx(x), sy(y), 1.6, colour, 0.55);
+    // Cases in one cell of the plot's grid are drawn once, darker the more there are.
+    for (const auto& p : points[i]) {
+      if (std::isnan(p.closeness)) continue;
+      const double x = std::isfinite(p.closeness) ? p.closeness : xmin + 4;
+      const double y = p.nonfinite ? 66 : std::min(p.bits, 64.0);
+      const double opacity = std::min(1.0, 0.55 + 0.13 * std::log2(static_cast<double>(p.count)));
+      f.circle(sx(x), sy(y), 1.6, colour, opacity);
     }
     f.rect(W - right + 12, top + 14 * i, 9, 9, colour);
     f.text(W - right + 26, top + 14 * i + 9, r.impl->name);
@@ -281,18 +415,17 @@ int print_check_report(const check_options& o, const check_report& report) {
 // What merge needs of one implementation's shard besides its report: the statistics of each
 // summary, where each case stood in the whole run, and the singled-out cases with the
 // implementation's outputs for them.
-nlohmann::json shard_payload(const impl_run& r, const check_result& x) {
+nlohmann::json shard_payload(const impl_tally& r, const check_result& x) {
   nlohmann::json j;
-  j["summary"] = mergeable_json(summarize_mergeable(r.grades, 3));
+  j["summary"] = mergeable_json(r.whole ? *r.whole : summarize_mergeable({}, 3));
   nlohmann::json by_class = nlohmann::json::object();
   std::map<std::uint64_t, const case_grade*> singled;
   for (const auto& g : singled_out_cases(x.summary)) singled[g.id] = nullptr;
-  for (const auto& [cls, s] : x.by_class) {
-    std::vector<case_grade> part_of_class;
-    for (const auto& g : r.grades)
-      if (g.cls == cls) part_of_class.push_back(g);
-    by_class[std::string(to_string(cls))] = mergeable_json(summarize_mergeable(part_of_class, 1));
-    for (const auto& g : singled_out_cases(s)) singled[g.id] = nullptr;
+  for (input_class cls : all_input_classes()) {
+    const auto it = r.by_class.find(cls);
+    if (it == r.by_class.end() || !it->second) continue;
+    by_class[std::string(to_string(cls))] = mergeable_json(*it->second);
+    for (const auto& g : singled_out_cases(it->second->summary)) singled[g.id] = nullptr;
   }
   j["by_class"] = by_class;
   j["positions"] = r.positions;
@@ -308,7 +441,7 @@ nlohmann::json shard_payload(const impl_run& r, const check_result& x) {
   return j;
 }
 
-html_page check_page(const check_options& o, const check_report& report, const std::vector<impl_run>& runs) {
+html_page check_page(const check_options& o, const check_report& report, const std::vector<impl_tally>& runs) {
   html_page page;
   page.title = "shadowproof check";
   page.command = o.command_line;
@@ -332,7 +465,7 @@ html_page check_page(const check_options& o, const check_report& report, const s
     g.type = x.impl->type;
     g.conv = &x.impl->conv;
     g.summary = &x.summary;
-    g.grades = &runs[i].grades;
+    g.plot = &runs[i].plot;
     g.lookup = x.lookup;
     g.failed = gate.ulps_exceeded(x.summary) || gate.verdict_reached(x.summary);
     page.sections.push_back(graded_section(g));
@@ -390,48 +523,52 @@ int run_check(const check_options& o) {
     chosen = matching;
   }
   const shard part = o.shard_spec.empty() ? shard{} : parse_shard(o.shard_spec);
-  std::vector<impl_run> runs;
-  oracle_counters counters;
-  double grading_seconds = 0;  // running the implementations and grading, not generating cases
-  std::size_t graded = 0;
+  kept_per_case keep;
+  keep.verdicts = o.json;
+  keep.positions = o.json && !o.shard_spec.empty();
+  keep.plot = !o.svg.empty() || !o.html.empty();
+  keep.class_summaries = o.json;
+  const unsigned jobs = o.jobs == 0 ? default_jobs() : o.jobs;
+  std::vector<impl_tally> runs;
+  // Generating, running, grading and summarising, wall-clock.
+  const auto start = std::chrono::steady_clock::now();
   {
     progress_bar bar(chosen.size());
-    for (const implementation* impl : chosen) {
-      impl_run r{impl, given.empty() ? generate_cases(impl->op, impl->type, o.cases, o.seed, class_filter, impl->conv)
-                                     : given, {}};
-      // A shard keeps its own cases, remembering where each stood in the whole run.
-      for (std::size_t k = 0; k < r.cases.size(); ++k)
-        if (part.contains(r.cases[k].id)) {
-          r.positions.push_back(k);
-          if (r.positions.size() - 1 != k) r.cases[r.positions.size() - 1] = std::move(r.cases[k]);
-        }
-      r.cases.resize(r.positions.size());
-      const auto start = std::chrono::steady_clock::now();
-      r.grades = run_and_grade_in_parallel(*impl, r.cases, o.jobs, oracle_mode::filtered, &counters);
-      grading_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      graded += r.cases.size();
-      runs.push_back(std::move(r));
-      bar.step(impl->name);
-    }
+    std::mutex bar_lock;
+    // Many implementations: each thread takes whole implementations in turn, generating,
+    // grading and summarising its cases alone, so no thread ever waits for another. Few: the
+    // threads share each implementation's chunks. Each tally depends on its implementation
+    // alone, so the report is the same either way.
+    const bool across = jobs > 1 && chosen.size() >= 4 * static_cast<std::size_t>(jobs);
+    runs.resize(chosen.size());
+    for_each_slice(chosen.size(), across ? jobs : 1, 1, [&](std::size_t first, std::size_t end) {
+      for (std::size_t i = first; i < end; ++i) {
+        runs[i] = tally_implementation(*chosen[i], o, given, class_filter, part, across ? 1 : jobs, keep);
+        const std::lock_guard<std::mutex> guard(bar_lock);
+        bar.step(chosen[i]->name);
+      }
+    });
   }
 
   check_report report;
-  report.counters = counters;
-  report.grading_seconds = grading_seconds;
-  report.graded = graded;
+  for (const auto& r : runs) {
+    report.counters.decided_by_intervals += r.counters.decided_by_intervals;
+    report.counters.fell_back_to_rationals += r.counters.fell_back_to_rationals;
+    report.graded += r.graded;
+  }
+  report.grading_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   report.given_cases = given.size();
   for (const auto& r : runs) {
     check_result x;
     x.impl = r.impl;
-    x.summary = summarize(r.grades, 3);
+    if (r.whole) x.summary = r.whole->summary;
+    else x.summary = summarize({}, 3);
     for (input_class cls : all_input_classes()) {
-      std::vector<case_grade> part_of_class;
-      for (const auto& g : r.grades)
-        if (g.cls == cls) part_of_class.push_back(g);
-      if (!part_of_class.empty()) x.by_class.emplace_back(cls, summarize(part_of_class, 1));
+      const auto it = r.by_class.find(cls);
+      if (it != r.by_class.end() && it->second) x.by_class.emplace_back(cls, it->second->summary);
     }
-    for (const auto& g : r.grades) x.case_verdicts.push_back(std::string(to_string(g.v)));
-    const impl_run* run = &r;
+    for (verdict v : r.verdicts) x.case_verdicts.push_back(std::string(to_string(v)));
+    const impl_tally* run = &r;
     x.lookup = [run](std::uint64_t id) -> const test_case& { return run->by_id(id); };
     report.results.push_back(std::move(x));
   }

@@ -248,10 +248,10 @@ int run_fuzz_command(const fuzz_options& o) {
   s.metamorphic = !o.no_metamorphic;
   s.jobs = o.jobs;
   if (!o.shard_spec.empty()) s.part = parse_shard(o.shard_spec);
-  std::vector<html_point> points;
+  point_cloud points;  // bounded, however many cases run
   if (!o.html.empty())
     s.on_case = [&](const test_case& c, const case_grade& g) {
-      points.push_back({closeness_to_degeneracy(c), g.max_bits, g.nonfinite > 0 || g.garbage > 0});
+      points.add(closeness_to_degeneracy(c), g.max_bits, g.nonfinite > 0 || g.garbage > 0);
     };
   if (!o.out_dir.empty()) {  // fail before a long run, not after it
     std::error_code ec;
@@ -275,7 +275,7 @@ int run_fuzz_command(const fuzz_options& o) {
     }
     write_file_atomically(dir / "report.json", report_json(r).dump(2) + "\n");
   }
-  if (!o.html.empty()) write_html(o.html, fuzz_page(o, impl, r, std::move(points)));
+  if (!o.html.empty()) write_html(o.html, fuzz_page(o, impl, r, points.points()));
   if (o.json) {
     nlohmann::json doc = report_json(r);
     if (!o.shard_spec.empty()) doc["shard"] = shard_json(s.part, run_json(o));

@@ -42,18 +42,26 @@ struct grade_options {
   std::string fail_on;
   std::vector<std::string> conventions;  // name=value
   unsigned jobs = 0;  // 0: default_jobs()
+  std::size_t max_cases = 1000000;
   std::string shard_spec;
   std::string html;
   std::string command_line;
 };
 
-std::vector<std::string> read_lines(const std::string& path, const char* what) {
+// The non-blank lines of a case or outputs file, at most max_lines of them: grade holds every
+// case and output in memory, about 2 kB per case.
+std::vector<std::string> read_lines(const std::string& path, const char* what, std::size_t max_lines) {
   std::ifstream f(path);
   if (!f) throw error(errc::grade_file, std::string("cannot read the ") + what + " file '" + path + "'");
   std::vector<std::string> lines;
   std::string line;
   while (std::getline(f, line))
-    if (line.find_first_not_of(" \t\r") != std::string::npos) lines.push_back(line);
+    if (line.find_first_not_of(" \t\r") != std::string::npos) {
+      if (lines.size() == max_lines)
+        throw error(errc::io_too_large, path + " has more than " + std::to_string(max_lines) +
+                                        " lines (raise the limit with --max-cases, or grade the cases in parts)");
+      lines.push_back(line);
+    }
   return lines;
 }
 
@@ -217,7 +225,9 @@ html_page grade_page(const grade_options& o, const grade_report& r, const std::v
   g.type = r.type;
   g.conv = &r.conv;
   g.summary = &r.all;
-  g.grades = &grades;
+  point_cloud plot;
+  for (const auto& x : grades) add_to_plot(plot, r.lookup(x.id), x);
+  g.plot = &plot;
   g.lookup = r.lookup;
   g.failed = grade_failed(o, r.all);
   page.sections.push_back(graded_section(g));
@@ -229,7 +239,7 @@ int run_grade(const grade_options& o) {
   (void)parse_fail_on(o.fail_on);  // a bad --fail-on fails before any grading
   const shard part = o.shard_spec.empty() ? shard{} : parse_shard(o.shard_spec);
 
-  const auto case_lines = read_lines(o.cases_path, "cases");
+  const auto case_lines = read_lines(o.cases_path, "cases", o.max_cases);
   if (case_lines.empty()) throw error(errc::grade_empty, "the case file '" + o.cases_path + "' has no case");
   std::vector<test_case> cases;
   std::vector<conventions> case_conv;  // the command line's, overridden by the line's own
@@ -245,7 +255,7 @@ int run_grade(const grade_options& o) {
                                          " means nothing for " +
                                          std::string(to_string(cases.back().op)) + " outputs");
   }
-  const auto output_lines = read_lines(o.outputs_path, "outputs");
+  const auto output_lines = read_lines(o.outputs_path, "outputs", o.max_cases);
   if (output_lines.empty())
     throw error(errc::grade_empty, "the outputs file '" + o.outputs_path + "' has no line: none of the " +
                                    std::to_string(cases.size()) + " cases was answered");
@@ -318,8 +328,9 @@ int run_grade(const grade_options& o) {
     r.by_class.emplace_back(cls, summarize(p, 1));
     r.class_rows.emplace_back(cls, summarize(p, 0));
   }
-  for (const auto& g : grades)
-    r.case_verdicts.push_back({{"id", g.id}, {"class", std::string(to_string(g.cls))},
+  if (o.json)  // printed only there
+    for (const auto& g : grades)
+      r.case_verdicts.push_back({{"id", g.id}, {"class", std::string(to_string(g.cls))},
                                {"verdict", std::string(to_string(g.v))}, {"max_ulps", g.max_ulps},
                                {"misclassified", g.misclassified}});
   r.counters = counters;
@@ -387,6 +398,8 @@ const command_registration grade_registration{command{
                      "a case line's own \"conventions\" override the command line's for that case");
       app.add_flag("--json", o->json, "print one JSON object (every field, every case's verdict)");
       add_jobs_option(app, o->jobs);
+      app.add_option("--max-cases", o->max_cases, "refuse case and outputs files of more lines than this (every case is "
+                                                  "held in memory, about 2 kB each)")->capture_default_str();
       app.add_flag("--wide", o->wide, "show a worst case per verdict, with every output and the inputs");
       app.add_option("--max-ulps", o->max_ulps, "exit with 1 when an output is more than this many ulps off, or NaN/Inf "
                                                 "where the exact value exists, or a case is garbage or misclassified");

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -45,6 +46,43 @@ pre{background:#f6f8fa;border:1px solid #e3e5ea;border-radius:4px;padding:8px 10
 pre.repro{user-select:all;background:#fffbe6;border-color:#e8d9a0}
 .muted{color:#666}
 )";
+
+// Cell indices of the closeness axis for the values that are not numbers of it.
+constexpr long long degenerate_cell = std::numeric_limits<long long>::min();
+constexpr long long unknown_cell = std::numeric_limits<long long>::max();
+constexpr long long above_cell = unknown_cell - 1;
+
+}  // namespace
+
+void point_cloud::add(double closeness, double bits, bool nonfinite) {
+  ++cases_;
+  long long x = unknown_cell;
+  if (std::isinf(closeness)) x = closeness < 0 ? degenerate_cell : above_cell;
+  else if (!std::isnan(closeness)) x = std::llround(std::min(std::max(closeness, -1e6), 1e6) * 16);
+  // Non-finite cases sit in a band whatever their bits.
+  const long long y = nonfinite || std::isnan(bits) ? 0 : std::llround(std::min(std::max(bits, 0.0), 64.0) * 8);
+  ++cells_[{nonfinite, x, y}];
+}
+
+std::vector<html_point> point_cloud::points() const {
+  std::vector<html_point> out;
+  out.reserve(cells_.size());
+  for (const auto& [cell, n] : cells_) {
+    const auto [nonfinite, x, y] = cell;
+    html_point p;
+    p.closeness = x == degenerate_cell ? -std::numeric_limits<double>::infinity()
+                  : x == unknown_cell  ? std::numeric_limits<double>::quiet_NaN()
+                  : x == above_cell    ? std::numeric_limits<double>::infinity()
+                                       : static_cast<double>(x) / 16;
+    p.bits = static_cast<double>(y) / 8;
+    p.nonfinite = nonfinite;
+    p.count = n;
+    out.push_back(p);
+  }
+  return out;
+}
+
+namespace {
 
 struct plot_range {
   double xmin = -10, xmax = 2;
@@ -96,13 +134,15 @@ std::string scatter(const std::vector<html_point>& points, const std::string& co
     if (std::isnan(p.closeness)) continue;
     const double px = std::isfinite(p.closeness) ? sx(p.closeness) : left + band / 2;
     const double y = p.nonfinite ? 67 : std::min(std::max(p.bits, 0.0), 64.0);
-    ++pixels[{std::lround(px * 0.5), std::lround(sy(y) * 0.5)}];  // 2-pixel cells
+    pixels[{std::lround(px * 0.5), std::lround(sy(y) * 0.5)}] += p.count;  // 2-pixel cells
   }
   for (const auto& [cell, n] : pixels) {
     const double opacity = std::min(1.0, 0.35 + 0.13 * std::log2(static_cast<double>(n)));
     f.circle(static_cast<double>(cell.first) * 2.0, static_cast<double>(cell.second) * 2.0, 2.2, colour, opacity);
   }
-  f.text(left, 15, std::to_string(points.size()) + " cases", "start", "#555");
+  std::size_t cases = 0;
+  for (const auto& p : points) cases += p.count;
+  f.text(left, 15, std::to_string(cases) + " cases", "start", "#555");
   return f.str();
 }
 

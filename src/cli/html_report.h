@@ -4,7 +4,9 @@
 // cases with reproducer commands, and the conventions it declares. No scripts, fonts, images or
 // style sheets from elsewhere: the page reads the same offline, attached to a bug or a CI run.
 #include <cstddef>
+#include <map>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -17,6 +19,24 @@ struct html_point {
   double closeness = 0;
   double bits = 0;
   bool nonfinite = false;
+  std::size_t count = 1;  ///< cases at this point
+};
+
+/// Graded cases for a plot, in memory that does not grow with their number: each case falls in
+/// a cell of 1/16 of a unit of log2 closeness by 1/8 of a bit of error (finer than the plots'
+/// pixels), and a cell is kept once, with its count. At most 70,000 × 513 cells exist (log2
+/// closeness of doubles lies within ±2,200; bits of error within 0…64), whatever the case count.
+class point_cloud {
+ public:
+  void add(double closeness, double bits, bool nonfinite);
+  /// One point per occupied cell, at the cell's centre, with its count; in cell order.
+  std::vector<html_point> points() const;
+  /// Every case added.
+  std::size_t cases() const { return cases_; }
+
+ private:
+  std::map<std::tuple<bool, long long, long long>, std::size_t> cells_;  // (nonfinite, x cell, y cell)
+  std::size_t cases_ = 0;
 };
 
 /// A worst case: what it is, and the command that prints the exact answer for its inputs.

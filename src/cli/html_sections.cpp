@@ -50,6 +50,11 @@ html_case case_entry(const graded_run& run, const case_grade& g, const std::stri
 
 }  // namespace
 
+void add_to_plot(point_cloud& plot, const test_case& c, const case_grade& g) {
+  const double x = std::isnan(c.closeness) ? closeness_to_degeneracy(c) : c.closeness;
+  plot.add(x, g.max_bits, g.nonfinite > 0 || g.garbage > 0);
+}
+
 html_section graded_section(const graded_run& run) {
   const grade_summary& s = *run.summary;
   html_section h;
@@ -70,11 +75,7 @@ html_section graded_section(const graded_run& run) {
   const nlohmann::json declared = conventions_json(*run.conv);  // items() refers to it
   for (const auto& [key, value] : declared.items())
     h.conventions.emplace_back(key, value.is_string() ? value.get<std::string>() : value.dump());
-  for (const auto& g : *run.grades) {
-    const test_case& c = run.lookup(g.id);
-    const double x = std::isnan(c.closeness) ? closeness_to_degeneracy(c) : c.closeness;
-    h.points.push_back({x, g.max_bits, g.nonfinite > 0 || g.garbage > 0});
-  }
+  if (run.plot) h.points = run.plot->points();
   // Per verdict worse than faithful, its worst finite and its worst non-finite case; a
   // misclassified case when nothing else shows.
   std::set<std::uint64_t> shown;

@@ -19,10 +19,13 @@ struct graded_run {
   scalar_type type = scalar_type::f32;
   const conventions* conv = nullptr;
   const grade_summary* summary = nullptr;
-  const std::vector<case_grade>* grades = nullptr;  ///< every case, for the plot
+  const point_cloud* plot = nullptr;  ///< every case, for the plot
   case_lookup lookup;
   bool failed = false;
 };
+
+/// Adds case c, graded g, to a plot: its closeness to degeneracy against its bits of error.
+void add_to_plot(point_cloud& plot, const test_case& c, const case_grade& g);
 
 /// The section: verdict, counts per verdict, the plot of every case, the singled-out cases
 /// with their deciding output and reproducer, and the conventions.

@@ -53,7 +53,7 @@ _shadowproof() {
     "/explain/reflect-frames") words="--help -h --quaternion --d --point --svg" ;;
     "/explain/shadow") words="--help -h --plane --light --point --svg" ;;
     "/fuzz") words="--help -h --impl --seconds --cases --seed --max-ulps --out --json --no-metamorphic --jobs --shard --html" ;;
-    "/grade") words="--help -h --name --layout --vectors --light --depth --homogeneous --sentinel --clamps-behind-receiver --symmetric --convention --json --jobs --wide --max-ulps --fail-on --shard --html" ;;
+    "/grade") words="--help -h --name --layout --vectors --light --depth --homogeneous --sentinel --clamps-behind-receiver --symmetric --convention --json --jobs --max-cases --wide --max-ulps --fail-on --shard --html" ;;
     "/help") words="--help -h --all --man --bash-completion" ;;
     "/merge") words="--help -h --json --wide" ;;
     "/normal-matrix") words="--help -h --matrix --normal --json" ;;

@@ -292,9 +292,9 @@ std::string to_svg(const figure& fig) {
       } else if (item.kind != figure_item::shape::polygon) {
         placer.lines.push_back({f.at(view_of(item.at[0], panel.view)), f.at(view_of(item.at[1], panel.view))});
       } else {
-        for (std::size_t i = 0; i < item.at.size(); ++i)
-          placer.lines.push_back({f.at(view_of(item.at[i], panel.view)),
-                                  f.at(view_of(item.at[(i + 1) % item.at.size()], panel.view))});
+        for (std::size_t k = 0; k < item.at.size(); ++k)
+          placer.lines.push_back({f.at(view_of(item.at[k], panel.view)),
+                                  f.at(view_of(item.at[(k + 1) % item.at.size()], panel.view))});
       }
     }
     for (const auto& item : panel.items) draw_label(svg, item, f, panel.view, placer);

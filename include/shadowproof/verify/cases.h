@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -61,6 +62,24 @@ std::vector<test_case> generate_cases(operation op, scalar_type type, std::size_
                                       std::uint64_t seed, std::optional<input_class> cls = {},
                                       const conventions& requirements = {},
                                       std::uint64_t first_id = 0);
+
+/// The cases of generate_cases(op, type, count, seed, cls, requirements) a chunk at a time, for
+/// runs whose memory must not grow with the case count: next(n) returns the next n of that
+/// sequence (ids counting on from 0), whatever the chunk sizes asked for.
+class case_stream {
+ public:
+  case_stream(operation op, scalar_type type, std::uint64_t seed, std::optional<input_class> cls = {},
+              const conventions& requirements = {});
+  ~case_stream();
+  case_stream(case_stream&&) noexcept;
+  case_stream& operator=(case_stream&&) noexcept;
+  /// The next `count` cases of the sequence.
+  std::vector<test_case> next(std::size_t count);
+
+ private:
+  struct state;
+  std::unique_ptr<state> state_;
+};
 
 /// The shadowproof command that prints the exact answer for exactly these inputs (as hex
 /// floats), in the conventions that matter to it (the depth convention of projections).
