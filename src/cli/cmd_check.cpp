@@ -184,7 +184,12 @@ impl_tally tally_implementation(const implementation& impl, const check_options&
       return next_first < total ? chunk_at(next_first) : case_chunk{};
     };
     std::future<case_chunk> upcoming;
-    if (helper) upcoming = std::async(std::launch::async, prepare);
+    if (helper)
+      upcoming = std::async(std::launch::async, [&prepare] {
+        case_chunk chunk = prepare();
+        release_thread_caches();
+        return chunk;
+      });
     // The helper touches neither the current chunk nor the counters.
     current.grades = run_and_grade_in_parallel(impl, current.cases, jobs, oracle_mode::filtered, &t.counters);
     case_chunk next = helper ? upcoming.get() : prepare();

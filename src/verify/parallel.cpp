@@ -9,6 +9,8 @@
 #include <mutex>
 #include <thread>
 
+#include <mpfr.h>
+
 #include "batch_ranges.h"
 #include "shadowproof/core/error.h"
 
@@ -50,13 +52,19 @@ void for_slices(std::size_t count, unsigned jobs, std::size_t slice, oracle_coun
     }
   };
   std::vector<std::thread> threads;
-  for (unsigned t = 1; t < jobs; ++t) threads.emplace_back(run);
+  for (unsigned t = 1; t < jobs; ++t)
+    threads.emplace_back([&run] {
+      run();
+      release_thread_caches();
+    });
   run();
   for (auto& t : threads) t.join();
   if (failure) std::rethrow_exception(failure);
 }
 
 }  // namespace
+
+void release_thread_caches() { mpfr_free_cache2(MPFR_FREE_LOCAL_CACHE); }
 
 unsigned default_jobs() {
   const unsigned n = std::thread::hardware_concurrency();

@@ -18,6 +18,10 @@ namespace shadowproof {
 /// least 1).
 unsigned default_jobs();
 
+/// Frees what MPFR cached for the calling thread (its constants, such as π, are kept per
+/// thread): a thread that graded cases calls it before it ends, or that memory is lost.
+void release_thread_caches();
+
 /// Calls work(first, end) once for each slice [first, end) = [k·slice, min(count, (k+1)·slice))
 /// of [0, count), on `jobs` threads (0 means default_jobs()), slices taken in increasing k.
 /// work must write only what belongs to its own indices. When calls throw, the exception of
