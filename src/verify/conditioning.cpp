@@ -221,6 +221,27 @@ ival64 representative_enclosure(const ival64& v) {
   return v + ival64::between(-w, w);
 }
 
+// Every pending output certainly `stable` with D no larger than the part of the sum enclosed in
+// `partial`: the terms still to come are non-negative, so D can only grow and the verdict holds.
+bool all_stable_already(const pending_outputs& pending, const std::array<bool, 16>& unbounded,
+                        const std::array<ival64, 16>& value, const std::array<ival64, 16>& partial,
+                        const double* got, double stable_constant_u) {
+  const ival64 stable = ival64::point(stable_constant_u);
+  for (std::size_t t = 0; t < pending.count; ++t) {
+    if (unbounded[t]) continue;
+    const ival64 size = magnitude(value[t]);
+    if (pending.kind[t] != pending_kind::finite) {
+      // D > 0 and c·u·D ≥ |f| for every point.
+      if (exceeds(partial[t], ival64(0)) != noted::yes || exceeds(size, ival64(stable * partial[t])) != noted::no)
+        return false;
+    } else {
+      const ival64 error = magnitude(ival64(ival64::point(got[pending.index[t]]) - value[t]));
+      if (exceeds(error, ival64(stable * ival64(size + partial[t]))) != noted::no) return false;
+    }
+  }
+  return true;
+}
+
 // decide_generic's verdicts from long double intervals, without a rational evaluation: every
 // representative f_i(x) and f_i(x ± δ_j e_j) is enclosed (representative_enclosure), so D_i
 // lies in [D_lo, D_hi] and η in the matching range, and a verdict is given only when it is the
@@ -279,6 +300,10 @@ bool decide_generic_enclosed(case_grade& g, const test_case& c, const convention
       }
       for (std::size_t t = 0; t < pending.count; ++t)
         sensitivity[t] += ival64::between(steepest_lo[t], steepest_hi[t]);
+      if (all_stable_already(pending, unbounded, value, sensitivity, got, spec.stable_constant * unit<F>())) {
+        for (std::size_t t = 0; t < pending.count; ++t) g.outputs[pending.index[t]].v = verdict::stable;
+        return true;
+      }
     }
     const ival64 stable = ival64::point(spec.stable_constant * unit<F>());
     const ival64 tau = ival64::point(wrong_threshold(c.type));
