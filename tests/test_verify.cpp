@@ -850,11 +850,10 @@ std::vector<conventions> irrational_conventions(operation op) {
   conventions left;
   left.hand = handedness::left;
   if (op == operation::look_at || op == operation::target_to) return {conventions{}, left};
-  conventions degrees;
-  degrees.angle = angle_unit::degrees;
-  conventions reverse_degrees = degrees;
-  reverse_degrees.depth = depth_convention::reverse_z;
-  return {conventions{}, left, degrees, reverse_degrees};
+  conventions left_degrees_reverse = left;
+  left_degrees_reverse.angle = angle_unit::degrees;
+  left_degrees_reverse.depth = depth_convention::reverse_z;
+  return {conventions{}, left_degrees_reverse};
 }
 
 // Outputs that reach every verdict: the library's float formula, a few ulps off it, a relative
@@ -899,8 +898,7 @@ TEST_CASE("the irrational camera builders graded over intervals agree with the a
     for (scalar_type type : {scalar_type::f32, scalar_type::f64})
       for (const conventions& conv : irrational_conventions(op))
         for (input_class cls : all_input_classes()) {
-          const std::size_t per_class = op == operation::look_at || op == operation::target_to ? 5 : 3;
-          const auto cases = generate_cases(op, type, per_class, 300 + static_cast<int>(op), cls, conv);
+          const auto cases = generate_cases(op, type, 3, 300 + static_cast<int>(op), cls, conv);
           for (const auto& c : cases) {
             const std::vector<double> out =
                 type == scalar_type::f32 ? perturbed_outputs<float>(c, rng) : perturbed_outputs<double>(c, rng);
@@ -912,7 +910,7 @@ TEST_CASE("the irrational camera builders graded over intervals agree with the a
             for (const output_grade& o : slow.outputs) ++reached[static_cast<std::size_t>(o.v)];
           }
         }
-  CHECK(graded == 2 * 4 * (2 * 2 * 5 + 2 * 4 * 3));
+  CHECK(graded == 4 * 2 * 2 * 4 * 3);
   // The sample reaches the verdicts that take the sensitivities.
   for (verdict v : {verdict::stable, verdict::unstable, verdict::range, verdict::wrong, verdict::nonfinite}) {
     INFO("verdict " << to_string(v));
