@@ -24,10 +24,12 @@ file(WRITE ${WORK}/outputs.jsonl "${outputs}")
 
 # Words are separated by '|' here (a ';' would flatten the list of commands). Each command
 # grades more cases per implementation than one thread's slice (256 for check and grade, 64 for
-# fuzz), so every --jobs count really splits the work.
+# fuzz), so every --jobs count really splits the work; with 4,096 cases per implementation,
+# check's threads take whole implementations, costliest first (--jobs 2).
 set(commands
   "check|--impl|all|--op|shadow-point|--cases|600|--seed|7"
   "check|--impl|all|--op|shadow-point|--cases|600|--seed|7|--json"
+  "check|--impl|all|--op|ortho|--cases|4096|--seed|7"
   "grade|${WORK}/cases.jsonl|${WORK}/outputs.jsonl"
   "grade|${WORK}/cases.jsonl|${WORK}/outputs.jsonl|--json"
   "fuzz|--impl|seed003-ray-f32|--cases|3000|--seed|7"
