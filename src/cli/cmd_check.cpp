@@ -121,12 +121,13 @@ void merge_into(std::optional<mergeable_summary>& acc, const std::vector<case_gr
 void add_chunk(impl_tally& t, const case_chunk& chunk, const kept_per_case& keep) {
   t.graded += chunk.grades.size();
   merge_into(t.whole, chunk.grades, 3);
-  for (input_class cls : all_input_classes()) {
-    if (!keep.class_summaries) break;
-    std::vector<case_grade> of_class;
-    for (const auto& g : chunk.grades)
-      if (g.cls == cls) of_class.push_back(g);
-    if (!of_class.empty()) merge_into(t.by_class[cls], of_class, 1);
+  if (keep.class_summaries) {
+    for (input_class cls : all_input_classes()) {
+      std::vector<case_grade> of_class;
+      for (const auto& g : chunk.grades)
+        if (g.cls == cls) of_class.push_back(g);
+      if (!of_class.empty()) merge_into(t.by_class[cls], of_class, 1);
+    }
   }
   std::set<std::uint64_t> ids;
   auto note = [&](const std::optional<mergeable_summary>& m) {

@@ -140,10 +140,15 @@ void print_case(std::ostream& out, const std::string& title, const case_grade& g
   } else {
     emit(out, output_text(g, c, conv, j, q), indent, style.width);
     emit(out, verdict_reason(g.outputs[j].v, g, j, q, cc, c.type), indent, style.width);
-    if (q.defined && std::isfinite(q.condition))
+    if (q.defined && std::isfinite(q.condition)) {
+      // ‖got − exact‖ / ‖exact‖ has no value when an output is NaN or Inf.
+      const std::string error = std::isfinite(cc.normwise_error)
+                                    ? "normwise error " + scientific(cc.normwise_error)
+                                    : std::string("no normwise error (an output is NaN or Inf)");
       emit(out, "condition " + scientific(q.condition) + ", normwise condition " + scientific(cc.normwise_condition) +
-                    ", normwise error " + scientific(cc.normwise_error),
+                    ", " + error,
            indent, style.width);
+    }
   }
   if (g.scale && g.scale_pivot)
     emit(out, "graded up to scale: lambda " + scientific(*g.scale) + " from the pivot " +

@@ -283,7 +283,8 @@ std::vector<std::string> metamorphic_relations(operation op) {
 }
 
 std::optional<std::uint64_t> metamorphic_violation(const implementation& impl, const test_case& c,
-                                                   const std::string& relation, std::uint64_t threshold) {
+                                                   const std::string& relation, std::uint64_t threshold,
+                                                   const case_grade* original_grade) {
   const auto t = transform(impl, c, relation);
   if (!t) return std::nullopt;
   const auto original = run(impl, c);
@@ -297,8 +298,9 @@ std::optional<std::uint64_t> metamorphic_violation(const implementation& impl, c
   // by as much as the problem's conditioning allows: the translated input is another float
   // problem, and even a correctly rounded image, shifted and rounded again, loses what the shift
   // cancels. The relation fails only when the oracle blames the formula on one of the two.
-  if (!blames_formula(grade_case(c, impl.conv, original.data())) &&
-      !blames_formula(grade_case(t->input, impl.conv, got.data())))
+  const bool original_blamed =
+      blames_formula(original_grade ? *original_grade : grade_case(c, impl.conv, original.data()));
+  if (!original_blamed && !blames_formula(grade_case(t->input, impl.conv, got.data())))
     return std::nullopt;
   return d;
 }
@@ -441,7 +443,7 @@ fuzz_report run_fuzz(const implementation& impl, const fuzz_settings& settings,
         const auto out = run(impl, cases[k]);
         grades[k] = grade_case(cases[k], impl.conv, out.data());
         for (const auto& relation : relations)
-          violations[k].push_back(metamorphic_violation(impl, cases[k], relation, settings.ulps_threshold));
+          violations[k].push_back(metamorphic_violation(impl, cases[k], relation, settings.ulps_threshold, &grades[k]));
       }
     });
     for (std::size_t k = 0; k < mine; ++k) record_case(generated[k], cases[k], grades[k], violations[k]);

@@ -8,10 +8,12 @@
 #include <cstring>
 #include <limits>
 #include <type_traits>
+#include <vector>
 
 #include "batch_ranges.h"
 #include "kernels/batch.h"
 #include "operation_table.h"
+#include "oracle_fast.h"
 #include "ulps_between.h"
 #include "shadowproof/core/error.h"
 #include "shadowproof/core/number.h"
@@ -156,6 +158,104 @@ bool grade_column(const double* __restrict got, const double* __restrict ref, co
   return any_special;
 }
 
+// The classes of the float images of cases [first, end) and of their references, and the
+// plane values of the float images: the image filter (batch.h) over the columns.
+struct image_columns {
+  std::vector<double> plane_value, plane_value_decided, reference_decided;  // 1 where decided
+  std::vector<std::int8_t> classes;  // class(G) + 4 class(reference)
+  std::vector<std::uint8_t> decided;  // G's class
+  image_class got_class(std::size_t r) const { return static_cast<image_class>(classes[r] % 4); }
+  image_class reference_class(std::size_t r) const { return static_cast<image_class>(classes[r] / 4); }
+};
+void filter_images(const case_batch& b, const conventions& conv, const batch_references& refs, std::size_t first,
+                   std::size_t end, bool use_avx2, image_columns& r) {
+  const std::size_t count = b.count, n = end - first;
+  r.plane_value.resize(n);
+  r.plane_value_decided.assign(n, 0.0);
+  r.reference_decided.assign(n, 0.0);
+  r.classes.assign(n, 0);
+  r.decided.assign(n, 0);
+  // The filter reads the light as given and V as a point: any handedness or layout (a point has
+  // no matrix to transpose).
+  const detail::batch_filter filter = use_avx2 ? detail::avx2_image_filter(b.type) : detail::generic_image_filter(b.type);
+  if (!filter) return;
+  const double* columns[17];
+  for (std::size_t c = 0; c < 11; ++c) columns[c] = b.inputs.data() + c * count + first;
+  for (std::size_t c = 0; c < 3; ++c) {
+    columns[11 + c] = b.outputs.data() + c * count + first;
+    columns[14 + c] = refs.values.data() + c * count + first;
+  }
+  double* values[3] = {r.plane_value.data(), r.plane_value_decided.data(), r.reference_decided.data()};
+  filter(columns, n, conv, {values, r.decided.data(), r.classes.data()});
+}
+
+// What a shadow-point case's outputs mean beyond their values (grade_case's grade_meaning): the
+// class of the float image, its plane value, and whether it lies on another side than the
+// correctly rounded image. Decided from the image filter where it decides the image (and, when
+// the two differ, the reference); the operation's own grade_meaning otherwise. A case graded
+// whole by grade_case has them already; every other case has every exact output defined and
+// every output and reference finite.
+void grade_images_range(const case_batch& b, const conventions& conv, const batch_references& refs,
+                        batch_grades& out, std::size_t first, std::size_t end,
+                        const std::vector<std::uint8_t>& graded_whole, bool use_avx2) {
+  const detail::operation_spec& spec = detail::spec_of(b.op);
+  const std::size_t count = b.count, n = spec.signature.output_count;
+  // Kept from one range to the next on each thread: fresh columns for every range of a few
+  // thousand cases cost more in page faults than the filter itself.
+  thread_local image_columns images;
+  filter_images(b, conv, refs, first, end, use_avx2, images);
+  const bool f32 = b.type == scalar_type::f32;
+  double in[16];
+  test_case scratch;
+  double got[16];
+  case_grade g;
+  g.outputs.resize(n);
+  for (std::size_t i = first; i < end; ++i) {
+    const std::size_t r = i - first;
+    if (!graded_whole.empty() && graded_whole[r]) continue;
+    bool all_exact = true, same = true;
+    for (std::size_t j = 0; j < n; ++j) {
+      got[j] = b.outputs[j * count + i];
+      all_exact = all_exact && out.ulps[j * count + i] == 0;
+      same = same && refs.values[j * count + i] == got[j];
+    }
+    // assign_verdicts' rule; it matters only where the image differs from the reference.
+    const bool rejected = !same && !all_exact && detail::is_sentinel(spec, conv, got, n);
+    if (images.decided[r] && (same || rejected || images.reference_decided[r] != 0)) {
+      // The plane value where the filter left its rounding to the exact sum (G within a few
+      // ulps of P): the kernel for one case, which declines only inputs out of its range.
+      double plane_value = images.plane_value[r];
+      bool decided = images.plane_value_decided[r] != 0;
+      if (!decided) {
+        for (std::size_t k = 0; k < 4; ++k) in[k] = b.inputs[k * count + i];
+        decided = f32 ? detail::fast_plane_value_f32(in, got, plane_value) : detail::fast_plane_value_f64(in, got, plane_value);
+      }
+      if (decided) {
+        // The filter decides only sides (shadow, behind the receiver, beyond the light): the
+        // case is misclassified when the reference lies on another one.
+        out.got_class[i] = static_cast<std::int8_t>(images.got_class(r));
+        out.plane_value[i] = plane_value;
+        out.misclassified[i] = !same && !rejected && images.reference_class(r) != images.got_class(r);
+        continue;
+      }
+    }
+    load_case(b, i, scratch, got);
+    for (std::size_t j = 0; j < n; ++j) {
+      g.outputs[j].exact_defined = true;
+      g.outputs[j].reference = refs.values[j * count + i];
+    }
+    g.rejected = rejected;
+    g.got_class.reset();
+    g.reference_class.reset();
+    g.plane_value.reset();
+    g.misclassified = false;
+    spec.grade_meaning(g, scratch, conv, got, true, oracle_mode::filtered);
+    out.misclassified[i] = g.misclassified ? 1 : 0;
+    out.got_class[i] = g.got_class ? static_cast<std::int8_t>(*g.got_class) : std::int8_t(-1);
+    out.plane_value[i] = g.plane_value ? *g.plane_value : std::numeric_limits<double>::quiet_NaN();
+  }
+}
+
 template <class F>
 void grade_columns_range(const case_batch& b, const conventions& conv, const batch_references& refs, batch_grades& out,
                          std::size_t first, std::size_t end, batch_path path) {
@@ -187,27 +287,20 @@ void grade_columns_range(const case_batch& b, const conventions& conv, const bat
                                    first, end, out.ulps.data() + j * count, out.flags.data() + j * count, max_ulps, worst);
   // The cases with a non-finite, garbage or undefined output: grade_case itself, case by case
   // (rejections as a whole, undefined entries, overflows to the right infinity).
+  const detail::operation_spec& spec = detail::spec_of(b.op);
+  std::vector<std::uint8_t> graded_whole;  // per case of the range: 1 when grade_case graded it
   if (any_special) {
+    graded_whole.assign(end - first, 0);
     for (std::size_t i = first; i < end; ++i) {
       bool special = false;
       for (std::size_t j = 0; j < n; ++j) special |= (out.flags[j * count + i] & 0x80) != 0;
       if (!special) continue;
       load_case(b, i, scratch, got);
       store_case_grade(grade_case(scratch, conv, got), i, out);
+      graded_whole[i - first] = 1;
     }
   }
-  // What the outputs mean beyond their values (shadow-point): grade_case's own code.
-  const detail::operation_spec& spec = detail::spec_of(b.op);
-  if (!spec.grade_meaning) return;
-  // Misclassification compares with the class of the correctly rounded image and looks at
-  // rejections, so it takes the whole case's grade.
-  for (std::size_t i = first; i < end; ++i) {
-    load_case(b, i, scratch, got);
-    const case_grade g = grade_case(scratch, conv, got);
-    out.misclassified[i] = g.misclassified ? 1 : 0;
-    out.got_class[i] = g.got_class ? static_cast<std::int8_t>(*g.got_class) : std::int8_t(-1);
-    out.plane_value[i] = g.plane_value ? *g.plane_value : std::numeric_limits<double>::quiet_NaN();
-  }
+  if (spec.grade_meaning) grade_images_range(b, conv, refs, out, first, end, graded_whole, use_avx2);
 }
 
 }  // namespace

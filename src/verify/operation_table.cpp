@@ -1,6 +1,7 @@
 // The operation table in the order of operations.def, and the public functions that read it.
 #include "operation_table.h"
 
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -92,6 +93,15 @@ bool matrix3_sentinels(sentinel_kind kind, double* out) { return square_sentinel
 bool point_sentinels(sentinel_kind kind, double* out) {
   if (kind != sentinel_kind::zero) return false;
   out[0] = out[1] = out[2] = 0;
+  return true;
+}
+
+bool is_sentinel(const operation_spec& spec, const conventions& conv, const double* got, std::size_t n) {
+  if (conv.sentinel == sentinel_kind::none || !spec.sentinel_outputs) return false;
+  std::array<double, 16> s{};
+  if (!spec.sentinel_outputs(conv.sentinel, s.data())) return false;
+  for (std::size_t j = 0; j < n; ++j)
+    if (!(got[j] == s[canonical_index(j, spec.signature.matrix_size, conv)])) return false;
   return true;
 }
 

@@ -149,6 +149,10 @@ bool matrix_sentinels(sentinel_kind kind, double* outputs);
 bool matrix3_sentinels(sentinel_kind kind, double* outputs);
 bool point_sentinels(sentinel_kind kind, double* outputs);
 
+/// Whether the n outputs `got` (in the implementation's layout) equal the sentinel the
+/// conventions declare for this operation (zero and identity read the same in every order).
+bool is_sentinel(const operation_spec& spec, const conventions& conv, const double* got, std::size_t n);
+
 /// Box inputs (l, r, b, t, n, f): the flattest relative extent |hi − lo| / (|lo| + |hi|) in log2.
 double box_closeness(const double* x);
 

@@ -234,17 +234,6 @@ void grade_outputs(case_grade& g, const test_case& c, std::size_t n, const doubl
   g.max_bits = g.max_ulps ? bits_of(g.max_ulps) : 0.0;
 }
 
-// The outputs equal the declared sentinel (in canonical order; zero and identity read the same
-// in every storage order).
-bool is_sentinel(const detail::operation_spec& spec, const conventions& conv, const double* got, std::size_t n) {
-  if (conv.sentinel == sentinel_kind::none || !spec.sentinel_outputs) return false;
-  std::array<double, 16> s{};
-  if (!spec.sentinel_outputs(conv.sentinel, s.data())) return false;
-  for (std::size_t j = 0; j < n; ++j)
-    if (!(got[j] == s[detail::canonical_index(j, spec.signature.matrix_size, conv)])) return false;
-  return true;
-}
-
 // The verdict of every output and of the case (grade.h, docs/verdicts.md). What the ulps and the
 // relative error decide is decided here; the rest waits for the derivatives.
 template <class F>
@@ -257,7 +246,7 @@ void assign_verdicts(case_grade& g, const test_case& c, const conventions& conv,
     all_exact = all_exact && r.defined[j] && g.outputs[j].ulps == 0 && !g.outputs[j].nonfinite &&
                 (std::isfinite(got[j]) || got[j] == r.value[j]);
   }
-  const bool sentinel = !all_exact && is_sentinel(spec, conv, got, n);
+  const bool sentinel = !all_exact && detail::is_sentinel(spec, conv, got, n);
   if (r.any_undefined && (all_nonfinite || sentinel)) {
     // A problem without (a full) answer, rejected as a whole: the correct answer.
     g.rejected = true;

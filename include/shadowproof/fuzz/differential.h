@@ -85,8 +85,12 @@ std::vector<std::string> metamorphic_relations(operation op);
 
 /// Checks one relation on one case: nothing when it holds (or does not apply to the case),
 /// otherwise the disagreement in ulps (UINT64_MAX when one side is non-finite and the other not).
+/// A disagreement past `threshold` counts only when the oracle blames the formula on one of the
+/// two cases; `original_grade`, when the caller already holds the grade of `c`, spares grading
+/// it again.
 std::optional<std::uint64_t> metamorphic_violation(const implementation& impl, const test_case& c,
-                                                   const std::string& relation, std::uint64_t threshold);
+                                                   const std::string& relation, std::uint64_t threshold,
+                                                   const case_grade* original_grade = nullptr);
 
 /// A ready-to-paste Catch2 test that reproduces the (shrunk) failure through the registry.
 std::string catch2_regression_test(const implementation& impl, const fuzz_failure& f);

@@ -30,12 +30,24 @@ struct batch_filter_out {
 using batch_filter = void (*)(const double* const* in, std::size_t count, const conventions& conv,
                               const batch_filter_out& out);
 
-/// The generic filter of (op, type) (never null: every operation has one).
+/// The generic filter of (op, type), or null for an operation without one (the camera builders
+/// with irrational values and the size builders: their cases go one by one).
 batch_filter generic_batch_filter(operation op, scalar_type type);
 
 /// The AVX2 filter of (op, type), or null when this build has none (not x86-64, or the
 /// compiler cannot target AVX2). Callable only when avx2_supported().
 batch_filter avx2_batch_filter(operation op, scalar_type type);
+
+/// The shadow-point image filter: grading the float images G of many cases against their
+/// correctly rounded images C (what fast_image_class and fast_plane_value give one case).
+/// in[0..10] are the cases' inputs, in[11..13] the columns of G and in[14..16] those of C.
+/// out.point_class gets class(G) + 4 class(C) (image_class values), out.decided 1 where G's
+/// class is decided and out.values[2] 1 where C's is (0 where not: only the classes shadow,
+/// behind_receiver and beyond_light are decided); out.values[0] gets P·(G, 1) correctly rounded
+/// to double where out.values[1] gets 1 (0 where that rounding is undecided).
+batch_filter generic_image_filter(scalar_type type);
+/// The same for AVX2, or null when this build has none. Callable only when avx2_supported().
+batch_filter avx2_image_filter(scalar_type type);
 
 /// Whether the processor running this program has AVX2 and FMA (checked once).
 bool avx2_supported();

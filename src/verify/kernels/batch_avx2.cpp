@@ -255,6 +255,8 @@ bool grade_column_f64(const double* got, const double* ref, const std::uint32_t*
 
 batch_filter avx2_batch_filter(operation op, scalar_type type) { return batch_filter_over<v4d>(op, type); }
 
+batch_filter avx2_image_filter(scalar_type type) { return image_filter_over<v4d>(type); }
+
 grade_column_function avx2_grade_column(scalar_type type) {
   return type == scalar_type::f32 ? grade_column_f32 : grade_column_f64;
 }
@@ -265,6 +267,7 @@ grade_column_function avx2_grade_column(scalar_type type) {
 
 namespace shadowproof::detail {
 batch_filter avx2_batch_filter(operation, scalar_type) { return nullptr; }
+batch_filter avx2_image_filter(scalar_type) { return nullptr; }
 grade_column_function avx2_grade_column(scalar_type) { return nullptr; }
 }  // namespace shadowproof::detail
 

@@ -43,6 +43,15 @@ struct shadow_point_op {
   }
 };
 
+template <class F>
+struct shadow_image_op {
+  static constexpr int inputs = 17, outputs = 3;
+  template <class R>
+  static auto run(R* x, const conventions& conv, R* values, R& cls) {
+    return shadow_image_lanes<F, R>(x, conv, values, cls);
+  }
+};
+
 /// Cases [first, first + n), n ≤ block, on doubles: copied into local columns (which alias
 /// nothing), filtered by a loop whose body has no branch on the values (the compiler
 /// vectorises it: flatten inlines the whole formula into it), copied out.
@@ -114,8 +123,21 @@ batch_filter batch_filter_over(operation op, scalar_type type) {
                  : filter_all<fraction_op<normal_matrix_form, double>, R>;
     case operation::perspective:
       return f32 ? filter_all<fraction_op<perspective_form, float>, R> : filter_all<fraction_op<perspective_form, double>, R>;
+    case operation::perspective_fov:
+    case operation::perspective_fov_infinite:
+    case operation::look_at:
+    case operation::target_to:
+    case operation::ortho_size:
+    case operation::perspective_size:
+      return nullptr;  // no batch filter: the kernel for one case, or the generic oracle, case by case
   }
   return nullptr;
+}
+
+/// The shadow-point image filter of `type` over lanes R (batch.h's image_filter).
+template <class R>
+batch_filter image_filter_over(scalar_type type) {
+  return type == scalar_type::f32 ? filter_all<shadow_image_op<float>, R> : filter_all<shadow_image_op<double>, R>;
 }
 
 }  // namespace SHADOWPROOF_KERNEL_TARGET

@@ -9,6 +9,8 @@ namespace shadowproof::detail {
 
 batch_filter generic_batch_filter(operation op, scalar_type type) { return batch_filter_over<double>(op, type); }
 
+batch_filter generic_image_filter(scalar_type type) { return image_filter_over<double>(type); }
+
 bool avx2_supported() {
 #if defined(__x86_64__) && defined(__GNUC__)
   static const bool supported = [] {

@@ -76,5 +76,77 @@ auto shadow_point_lanes(R* x, const conventions& conv, R* values, R& cls) {
   return ok;
 }
 
+/// The side of the float image G on the line through the light and V (shadow_point.cpp's
+/// image_class_stage over a vector of cases), with the canonical light L and the filter numbers
+/// N: G's image_class value (a real) in `cls`, and the mask of lanes where it is decided. Only
+/// the classes with every sign clearly nonzero are decided here: shadow, behind_receiver and
+/// beyond_light (on_receiver and other need a zero).
+///   Directional light (w = 0): k = (V − G)·L, positive for a shadow (G lies beyond V, away
+///   from the light), negative behind the receiver.
+///   Point light L/w: G's position on the line from the light (0) through V (1) is u = a / b,
+///   a = Σ (w G_i − L_i)(w V_i − L_i), b = Σ (w V_i − L_i)² > 0: beyond the light for a < 0,
+///   a shadow for a > b, behind the receiver for 0 < a < b.
+template <class N, class R>
+auto image_side_lanes(const R* L, const R* V, const N* light_to_v, const N& b, const R* G, R& cls) {
+  const R w = L[3];
+  const auto directional = w == R(0.0);
+  N k = (N(V[0]) - N(G[0])) * N(L[0]);
+  SHADOWPROOF_UNROLL
+  for (int i = 1; i < 3; ++i) k = k + (N(V[i]) - N(G[i])) * N(L[i]);
+  N a = (exact_product(N(w), N(G[0])) - N(L[0])) * light_to_v[0];
+  SHADOWPROOF_UNROLL
+  for (int i = 1; i < 3; ++i) a = a + (exact_product(N(w), N(G[i])) - N(L[i])) * light_to_v[i];
+  const N beyond_v = a - b;
+  const auto a_negative = first_of(a) < R(0.0);
+  const auto point_decided = nonzero(b) & nonzero(a) & (a_negative | nonzero(beyond_v));
+  constexpr double shadow = 1, behind_receiver = 2, beyond_light = 3;  // image_class values
+  cls = select(directional, select(first_of(k) > R(0.0), R(shadow), R(behind_receiver)),
+               select(a_negative, R(beyond_light),
+                      select(first_of(beyond_v) > R(0.0), R(shadow), R(behind_receiver))));
+  return (directional & nonzero(k)) | ((!directional) & point_decided);
+}
+
+/// Grading the float image G of a case against its correctly rounded image C (batch.h's image
+/// filter, over a vector of cases): x = P[4], L[4] (as given), V[3], G[3], C[3]. Writes
+/// cls = class(G) + 4 class(C) (image_class values), 1 in values[2] where C's class is decided
+/// (0 where not), P·(G, 1) correctly rounded to double in values[0] and 1 in values[1] where
+/// that rounding is decided, and returns the mask of lanes where G's class is decided.
+template <class F, class R>
+auto shadow_image_lanes(R* x, const conventions& conv, R* values, R& cls) {
+  using N = filter_number_of<F, R>;
+  const R flip = select(x[7] == R(0.0), R(conv.light == light_sign::along_rays ? -1.0 : 1.0), R(1.0));
+  SHADOWPROOF_UNROLL
+  for (int i = 4; i < 7; ++i) x[i] = x[i] * flip;
+  const auto in_range = kernel_inputs<F, 4, 11>(x);  // a: w² G V, degree 4
+  const R* P = x;
+  const R* L = x + 4;
+  const R* V = x + 8;
+  const R* G = x + 11;
+  const R* C = x + 14;
+  // w V − L and b = |w V − L|², shared by both images.
+  N light_to_v[3];
+  SHADOWPROOF_UNROLL
+  for (int i = 0; i < 3; ++i) light_to_v[i] = exact_product(N(L[3]), N(V[i])) - N(L[i]);
+  const N b = light_to_v[0] * light_to_v[0] + light_to_v[1] * light_to_v[1] + light_to_v[2] * light_to_v[2];
+  R got_class, reference_class;
+  const auto got_decided = in_range & kernel_inputs<F, 4, 3>(G) & image_side_lanes(L, V, light_to_v, b, G, got_class);
+  const auto reference_decided =
+      in_range & kernel_inputs<F, 4, 3>(C) & image_side_lanes(L, V, light_to_v, b, C, reference_class);
+  cls = got_class + R(4.0) * reference_class;
+  values[2] = select(reference_decided, R(1.0), R(0.0));
+  // P·(G, 1) from exact products: four doubles for f32, seven for f64 (two per product).
+  if constexpr (std::is_same_v<F, float>) {
+    R terms[4] = {P[0] * G[0], P[1] * G[1], P[2] * G[2], P[3]};
+    values[1] = select(round_sum_to_double<4>(terms, values[0]), R(1.0), R(0.0));
+  } else {
+    R terms[7];
+    SHADOWPROOF_UNROLL
+    for (int i = 0; i < 3; ++i) two_product(P[i], G[i], terms[2 * i], terms[2 * i + 1]);
+    terms[6] = P[3];
+    values[1] = select(round_sum_to_double<7>(terms, values[0]), R(1.0), R(0.0));
+  }
+  return got_decided;
+}
+
 }  // namespace SHADOWPROOF_KERNEL_TARGET
 }  // namespace shadowproof::detail
