@@ -49,27 +49,23 @@ function run(file, argv, options = {}) {
 }
 
 // ------------------------------------------------------------------------------------------
-// Verdicts. A grade today reports per input class the largest error in ulps and the counts of
-// non-finite outputs (where the exact value is finite) and finite garbage (where it does not
-// exist); the verdict summarises them in the order a user cares about. When `grade` reports
-// a verdict of its own, that one is shown instead.
+// Verdicts: the oracle's own (docs/verdicts.md), per input class in the `--json` reports of
+// `grade` and `check`; an adapter's is the worst over its classes, with the classes where it
+// occurs when it is worse than stable (an ill-conditioned input answered within its
+// conditioning is correct, whatever its ulps).
 
-const SHARP = 4;          // a few roundings
-const WRONG = 2 ** 20;    // more than 2^20 ulps: no correct digits left in f32, few in f64
+const VERDICTS = ["exact", "faithful", "stable", "unstable", "range", "wrong", "nonfinite", "garbage"];
+const CLASSES = ["regular", "near-degenerate", "degenerate"];
+const rank = (v) => VERDICTS.indexOf(v);
 
 function verdict(byClass) {
-  if (byClass.verdict) return byClass.verdict;
-  const regular = byClass.regular ?? {};
-  const all = Object.values(byClass).filter((s) => s && typeof s === "object" && "max_ulps" in s);
-  const max = (key) => Math.max(0, ...all.map((s) => s[key] ?? 0));
-  const worstUlps = max("max_ulps");
-  if ((regular.max_ulps ?? 0) > WRONG || (regular.nonfinite ?? 0) > 0 || (regular.garbage ?? 0) > 0 ||
-      (regular.misclassified ?? 0) > 0)
-    return "wrong on regular inputs";
-  if (worstUlps === 0 && max("nonfinite") === 0 && max("garbage") === 0) return "correctly rounded";
-  if (worstUlps > WRONG) return "unstable near degeneracies";
-  if (worstUlps <= SHARP) return `within ${worstUlps} ulp${worstUlps === 1 ? "" : "s"}`;
-  return `within ${worstUlps} ulps`;
+  const graded = CLASSES.filter((c) => byClass[c]);
+  if (graded.length === 0) throw new Error("a report without any input class");
+  for (const c of graded)
+    if (rank(byClass[c].verdict) < 0) throw new Error(`class ${c} has no verdict (${byClass[c].verdict})`);
+  const worst = VERDICTS[Math.max(...graded.map((c) => rank(byClass[c].verdict)))];
+  const where = rank(worst) > rank("stable") ? graded.filter((c) => byClass[c].verdict === worst) : [];
+  return { worst, where };
 }
 
 function undefinedHandling(byClass) {
@@ -82,14 +78,15 @@ function undefinedHandling(byClass) {
   return parts.join(", ") || "-";
 }
 
-// The worst case over all classes: the largest finite error when there is one (non-finite and
-// garbage answers have their own column), else the first non-finite or garbage case.
+// The worst case over all classes: the worst verdict, then the largest finite error (non-finite
+// and garbage answers have their own column).
 function worstCase(byClass) {
   let worst = null;
-  for (const s of Object.values(byClass)) {
-    if (!s || typeof s !== "object" || !Array.isArray(s.worst)) continue;
+  for (const c of CLASSES) {
+    const s = byClass[c];
+    if (!s || !Array.isArray(s.worst)) continue;
     for (const w of s.worst) {
-      const score = w.nonfinite || w.garbage ? -1 : (w.bits ?? 0);
+      const score = rank(w.verdict) * 10000 + (w.output.nonfinite || w.output.garbage ? -1 : (w.output.bits ?? 0));
       if (!worst || score > worst.score) worst = { ...w, score };
     }
   }
@@ -105,11 +102,10 @@ function gradeFile(casesPath, outputsPath) {
   return JSON.parse(run(shadowproof, ["grade", casesPath, outputsPath, "--json"]));
 }
 
-function addRow(row, graded) {
-  const byClass = { ...(graded.by_class ?? {}) };
-  if (graded.verdict) byClass.verdict = graded.verdict;
-  const summaries = Object.values(byClass).filter((s) => s && s.max_ulps !== undefined);
-  rows.push({ ...row, verdict: verdict(byClass), undefinedHandling: undefinedHandling(byClass), worst: worstCase(byClass),
+function addRow(row, byClass) {
+  const summaries = CLASSES.map((c) => byClass[c]).filter(Boolean);
+  const { worst, where } = verdict(byClass);
+  rows.push({ ...row, verdict: worst, where, undefinedHandling: undefinedHandling(byClass), worst: worstCase(byClass),
               maxUlps: Math.max(0, ...summaries.map((s) => s.max_ulps)), maxBits: Math.max(0, ...summaries.map((s) => s.max_bits)) });
 }
 
@@ -147,19 +143,22 @@ for (const jobs of groups.values()) {
   for (const j of jobs) {
     const a = j.adapter;
     addRow({ kind: "JavaScript", library: a.library, version: a.version, function: a.function, op: a.op, type: a.type,
-             conventions: a.conventions.join(", ") }, gradeFile(j.cases, j.outputs));
+             conventions: a.conventions.join(", ") }, gradeFile(j.cases, j.outputs).by_class);
   }
 }
 
 // C++ libraries built into shadowproof: the engines, not shadowproof's own seed routines.
 const engines = /^(glm|eigen|irrlicht|ogre|qt|osg)-/;
 for (const name of run(shadowproof, ["check", "--list"]).trim().split("\n").filter((n) => engines.test(n))) {
-  const doc = JSON.parse(run(shadowproof, ["check", "--impl", name, "--cases", String(cases), "--seed", seed, "--json"],
-                             { okStatus: [0, 1] }));
+  // One class at a time, a third of the cases each, as `shadowproof cases` draws them.
   const byClass = {};
   let first = null;
-  for (const r of doc.results) {
-    byClass[r.class] = r;
+  for (const cls of CLASSES) {
+    const doc = JSON.parse(run(shadowproof, ["check", "--impl", name, "--class", cls, "--cases",
+                                             String(Math.max(1, Math.round(cases / CLASSES.length))), "--seed", seed,
+                                             "--json"], { okStatus: [0, 1] }));
+    const r = doc.results[0];
+    byClass[cls] = r.by_class[cls];
     first ??= r;
   }
   const origin = first.origin;
@@ -173,7 +172,7 @@ for (const name of run(shadowproof, ["check", "--list"]).trim().split("\n").filt
   const library = { glm: "GLM", eigen: "Eigen", irrlicht: "Irrlicht", ogre: "Ogre", qt: "Qt 5", osg: "OpenSceneGraph" }[name.split("-")[0]];
   const version = (origin.match(/\d+(\.\d+)+/) ?? ["?"])[0];
   addRow({ kind: "C++", library, version, function: origin.replace(/^\S+ \S+ /, ""), op: first.op, type: first.type, conventions },
-         { by_class: byClass });
+         byClass);
 }
 
 // Shaders on a Vulkan driver.
@@ -199,7 +198,7 @@ if (vkBuild) {
     addRow({ kind: "shader", library: `${s.lang.toUpperCase()} shader on lavapipe`, version: `${mesa}, ${compilers[s.lang]}`,
              function: s.source,
              op: s.op, type: "f32", conventions: s.extra.includes("--directional") ? "directional lights" : "" },
-           gradeFile(casesPath, outputsPath));
+           gradeFile(casesPath, outputsPath).by_class);
   }
 }
 rmSync(work, { recursive: true, force: true });
@@ -208,8 +207,9 @@ rmSync(work, { recursive: true, force: true });
 // The table
 
 const count = (pred) => rows.filter(pred).length;
-process.stderr.write(`graded ${rows.length} adapters: ${count((r) => r.verdict === "correctly rounded")} correctly rounded, ` +
-                     `${count((r) => r.verdict === "wrong on regular inputs")} wrong on regular inputs\n`);
+const defect = (r) => rank(r.verdict) >= rank("wrong") && r.where.includes("regular");
+process.stderr.write(`graded ${rows.length} adapters: ${count((r) => r.verdict === "exact")} exact, ` +
+                     `${count(defect)} wrong, non-finite or garbage on regular inputs\n`);
 if (!out) process.exit(0);
 
 const esc = (s) => String(s ?? "").replace(/\|/g, "\\|");
@@ -217,10 +217,12 @@ const esc = (s) => String(s ?? "").replace(/\|/g, "\\|");
 const ulpsText = (ulps, bits) => (ulps < 2 ** 53 ? String(ulps) : `≈ 2^${bits.toFixed(1)}`);
 const worstText = (w) => {
   if (!w) return "-";
-  const what = w.exact_defined === false ? "exact undefined" : `exact ${w.expected}`;
-  const how = w.nonfinite ? "non-finite" : w.garbage ? "garbage" : `${ulpsText(w.ulps, w.bits)} ulps`;
-  return `output ${w.output}: got ${w.got}, ${what} (${how})`;
+  const o = w.output;
+  const what = o.expected == null ? "exact undefined" : `exact ${o.expected}`;
+  const how = o.nonfinite ? "non-finite" : o.garbage ? "garbage" : `${ulpsText(o.ulps, o.bits)} ulps`;
+  return `${w.verdict}, ${w.class}: ${o.name} got ${o.got}, ${what} (${how})`;
 };
+const verdictText = (r) => (r.where.length ? `${r.verdict} (${r.where.join(", ")})` : r.verdict);
 const libraries = [...new Set(rows.map((r) => `${r.library} ${r.version}`))];
 const verdicts = {};
 for (const r of rows) verdicts[r.verdict] = (verdicts[r.verdict] ?? 0) + 1;
@@ -233,33 +235,34 @@ lines.push("the exact answer for the very same float inputs (`shadowproof cases`
 lines.push("C++ libraries built into shadowproof). Each adapter calls the library's own function.");
 lines.push("");
 lines.push(`**${rows.length} adapters** over ${libraries.length} library builds and drivers: ` +
-           Object.entries(verdicts).sort((a, b) => b[1] - a[1]).map(([v, n]) => `${n} ${v}`).join(", ") + ".");
+           VERDICTS.filter((v) => verdicts[v]).map((v) => `${verdicts[v]} ${v}`).join(", ") +
+           `; ${count(defect)} wrong, non-finite or garbage on regular inputs.`);
 lines.push("");
-lines.push("Verdicts: *correctly rounded* — every defined output is the exact value rounded to the type;");
-lines.push(`*within k ulps* — at most k units in the last place anywhere; *unstable near degeneracies* — fine on`);
-lines.push(`regular inputs, more than 2^20 ulps on nearly degenerate ones; *wrong on regular inputs* — more than`);
-lines.push("2^20 ulps, a non-finite value or garbage on ordinary inputs: a defect (docs/upstream/). The");
-lines.push("*undefined outputs* column counts how the adapter answers where the exact value does not exist");
-lines.push("(flat view volumes, singular matrices, parallel lights): a finite number there is *garbage*.");
-lines.push("The reproducer prints the exact answer for the worst case's inputs.");
+lines.push("Verdicts are the oracle's ([verdicts.md](verdicts.md)), the worst over an adapter's cases:");
+lines.push("*exact* — every defined output is the exact value correctly rounded; *faithful* — within 1 ulp;");
+lines.push("*stable* — the error is within what the problem's own conditioning allows (c·u·κ): a correct");
+lines.push("answer for the float inputs given, however many ulps; *unstable* — more error than the conditioning");
+lines.push("explains: the formula loses accuracy; *range* — an intermediate over- or underflows the format;");
+lines.push("*wrong* — beyond any conditioning; *nonfinite* — NaN or Inf where the exact value is finite;");
+lines.push("*garbage* — a finite number where no exact value exists. For a verdict worse than stable, the");
+lines.push("input classes where it occurs follow it; wrong, non-finite or garbage on regular inputs is a defect");
+lines.push("(docs/upstream/). The *non-finite / garbage* column counts NaN or Inf outputs where the exact");
+lines.push("value is finite and finite outputs where it does not exist (flat view volumes, singular matrices,");
+lines.push("parallel lights). The reproducer prints the exact answer for the worst case's inputs.");
 lines.push("");
 // The headline: adapters per library and verdict.
-const verdictOrder = ["correctly rounded", "within a few ulps", "within more ulps", "unstable near degeneracies", "wrong on regular inputs"];
-const bucket = (v) => (v.startsWith("within") ? (Number(v.split(" ")[1]) <= SHARP ? verdictOrder[1] : verdictOrder[2]) : v);
-lines.push(`| library | adapters | ${verdictOrder.join(" | ")} |`);
-lines.push(`| --- | --- | ${verdictOrder.map(() => "---").join(" | ")} |`);
+lines.push(`| library | adapters | ${VERDICTS.join(" | ")} |`);
+lines.push(`| --- | --- | ${VERDICTS.map(() => "---").join(" | ")} |`);
 for (const lib of [...new Set(rows.map((r) => r.library))]) {
   const mine = rows.filter((r) => r.library === lib);
-  lines.push(`| ${esc(lib)} | ${mine.length} | ` + verdictOrder.map((v) => mine.filter((r) => bucket(r.verdict) === v).length || "").join(" | ") + " |");
+  lines.push(`| ${esc(lib)} | ${mine.length} | ` + VERDICTS.map((v) => mine.filter((r) => r.verdict === v).length || "").join(" | ") + " |");
 }
-lines.push("");
-lines.push(`(*within a few ulps*: at most ${SHARP}.)`);
 lines.push("");
 lines.push("| library | version | function | operation | type | conventions | verdict | max ulps | non-finite / garbage | worst case | reproducer |");
 lines.push("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |");
 for (const r of rows)
   lines.push(`| ${esc(r.library)} | ${esc(r.version)} | \`${esc(r.function)}\` | ${r.op} | ${r.type} | ${esc(r.conventions) || "-"} | ` +
-             `${r.verdict} | ${ulpsText(r.maxUlps, r.maxBits)} | ${r.undefinedHandling} | ${esc(worstText(r.worst))} | ` +
+             `${verdictText(r)} | ${ulpsText(r.maxUlps, r.maxBits)} | ${r.undefinedHandling} | ${esc(worstText(r.worst))} | ` +
              `${r.worst ? "`" + esc(r.worst.reproduce) + "`" : "-"} |`);
 lines.push("");
 writeFileSync(out, lines.join("\n"));

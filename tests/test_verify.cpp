@@ -2,6 +2,7 @@
 // the case protocol, and the filtered oracle agreeing exactly with the all-rational one.
 #include <catch2/catch.hpp>
 
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -698,8 +699,7 @@ TEST_CASE("the filtered oracle agrees exactly with the all-rational oracle", "[v
   clamped.directional_only = true;
   oracle_counters counters, irrational_counters;
   std::size_t graded = 0;
-  // Operations whose exact values are irrational: decided by MPFR enclosures in the rational
-  // oracle only (intervals defer at once), and never graded up to scale.
+  // Operations whose exact values are irrational: never graded up to scale.
   auto irrational = [](operation op) {
     return op == operation::perspective_fov || op == operation::perspective_fov_infinite ||
            op == operation::look_at || op == operation::target_to;
@@ -731,7 +731,8 @@ TEST_CASE("the filtered oracle agrees exactly with the all-rational oracle", "[v
         }
       }
   CHECK(graded + skipped == all_operations().size() * 2 * 2 * 150 + 2 * 150);
-  CHECK(irrational_counters.decided_by_intervals == 0);
+  // The irrational camera builders too: square roots and cotangents enclosed by intervals.
+  CHECK(irrational_counters.decided_by_intervals > 4 * irrational_counters.fell_back_to_rationals);
   // The comparison is only meaningful if intervals decide most cases on their own.
   CHECK(counters.decided_by_intervals > 4 * counters.fell_back_to_rationals);
 }
@@ -774,7 +775,8 @@ std::vector<conventions> kernel_conventions(operation op) {
 // all-rational one; every class, the conventions above.
 // The operations with dedicated error-free kernels; the others (irrational camera entries) are
 // decided by the generic oracle only, whose exact side is MPFR enclosures at growing precision:
-// a tenth of the cases keeps their agreement checked at a fraction of the time.
+// a tenth of the cases keeps their agreement checked at a fraction of the time (their own test,
+// below, covers their conventions).
 bool has_dedicated_kernel(operation op) {
   return op == operation::shadow_matrix || op == operation::shadow_point || op == operation::reflection_matrix ||
          op == operation::ortho || op == operation::frustum || op == operation::normal_matrix ||
@@ -838,6 +840,82 @@ TEST_CASE("the double kernels agree exactly with the all-rational oracle", "[ver
   oracle_counters counters;
   const std::size_t graded = check_kernel_grades<double>(91, 120, counters);
   CHECK(graded == expected_kernel_cases(120));
+  CHECK(counters.decided_by_intervals > 9 * counters.fell_back_to_rationals);
+}
+
+namespace {
+
+// The conventions the irrational camera builders read: handedness, and the angle's unit.
+std::vector<conventions> irrational_conventions(operation op) {
+  conventions left;
+  left.hand = handedness::left;
+  if (op == operation::look_at || op == operation::target_to) return {conventions{}, left};
+  conventions left_degrees_reverse = left;
+  left_degrees_reverse.angle = angle_unit::degrees;
+  left_degrees_reverse.depth = depth_convention::reverse_z;
+  return {conventions{}, left_degrees_reverse};
+}
+
+// Outputs that reach every verdict: the library's float formula, a few ulps off it, a relative
+// 2^-20 or 2^-9 off (stable, unstable or wrong by the conditioning), and NaN in one entry.
+template <class T>
+std::vector<double> perturbed_outputs(const test_case& c, std::mt19937_64& rng) {
+  std::vector<double> out = float_outputs<T>(c);
+  if (c.op == operation::target_to && out.size() == 16) {  // float_outputs gives the view matrix
+    const vec3<T> eye{static_cast<T>(c.inputs[0]), static_cast<T>(c.inputs[1]), static_cast<T>(c.inputs[2])};
+    const vec3<T> target{static_cast<T>(c.inputs[3]), static_cast<T>(c.inputs[4]), static_cast<T>(c.inputs[5])};
+    const vec3<T> up{static_cast<T>(c.inputs[6]), static_cast<T>(c.inputs[7]), static_cast<T>(c.inputs[8])};
+    const mat4<T> V = look_at_float(eye, target, up, handedness::right);
+    for (std::size_t r = 0; r < 3; ++r)
+      for (std::size_t k = 0; k < 3; ++k) out[r * 4 + k] = V(k, r);
+    for (std::size_t r = 0; r < 3; ++r) out[r * 4 + 3] = c.inputs[r];
+  }
+  const std::uint64_t pick = rng() % 5;
+  for (double& x : out) {
+    if (!std::isfinite(x) || x == 0) continue;
+    if (pick == 1) x = static_cast<T>(std::nextafter(std::nextafter(static_cast<T>(x), T(1e30)), T(1e30)));
+    if (pick == 2) x = static_cast<T>(x * (1 + std::ldexp(1.0, -20)));
+    if (pick == 3) x = static_cast<T>(x * (1 - std::ldexp(1.0, -9)));
+  }
+  if (pick == 4) out[rng() % out.size()] = std::numeric_limits<double>::quiet_NaN();
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("the irrational camera builders graded over intervals agree with the all-rational grade",
+          "[verify][oracle]") {
+  // look-at, target-to (entries q/√s) and perspective-fov (cot(fovy/2)): the references and
+  // every verdict of the filtered oracle, whose intervals enclose the square roots and the
+  // cotangents, against rationals and MPFR enclosures alone; every class, both types, both
+  // handednesses and both angle units.
+  oracle_counters counters;
+  std::size_t graded = 0;
+  std::array<std::size_t, 8> reached{};
+  std::mt19937_64 rng(12);
+  for (operation op : {operation::look_at, operation::target_to, operation::perspective_fov,
+                       operation::perspective_fov_infinite})
+    for (scalar_type type : {scalar_type::f32, scalar_type::f64})
+      for (const conventions& conv : irrational_conventions(op))
+        for (input_class cls : all_input_classes()) {
+          const auto cases = generate_cases(op, type, 3, 300 + static_cast<int>(op), cls, conv);
+          for (const auto& c : cases) {
+            const std::vector<double> out =
+                type == scalar_type::f32 ? perturbed_outputs<float>(c, rng) : perturbed_outputs<double>(c, rng);
+            const case_grade fast = grade_case(c, conv, out.data(), oracle_mode::filtered, &counters);
+            const case_grade slow = grade_case(c, conv, out.data(), oracle_mode::naive);
+            INFO("op " << to_string(op) << ", class " << to_string(cls) << ", case " << case_json_line(c));
+            require_same(fast, slow);
+            ++graded;
+            for (const output_grade& o : slow.outputs) ++reached[static_cast<std::size_t>(o.v)];
+          }
+        }
+  CHECK(graded == 4 * 2 * 2 * 4 * 3);
+  // The sample reaches the verdicts that take the sensitivities.
+  for (verdict v : {verdict::stable, verdict::unstable, verdict::range, verdict::wrong, verdict::nonfinite}) {
+    INFO("verdict " << to_string(v));
+    CHECK(reached[static_cast<std::size_t>(v)] > 0);
+  }
   CHECK(counters.decided_by_intervals > 9 * counters.fell_back_to_rationals);
 }
 

@@ -208,6 +208,140 @@ double to_double(const rational& q) { return to_nearest_double(q); }
 // verdict towards stable). A perturbed input on which some output stops
 // existing, or a quotient that does not settle, counts as D = ∞: the problem is singular within
 // 2^-20, and any output there is `stable`.
+// An enclosure of the representative the rational oracle holds for an output whose exact value
+// lies in v (constructions/irrational.h): the lower end of an MPFR enclosure at p ≥ 64 bits
+// whose ends round alike. A point v is exact, and so is the representative (Ziv's loop returns
+// the common end; exact square roots are caught first). Otherwise either the representative is
+// s√q's lower end RNDD(√RNDD(q)) ≥ √q (1 − 2^(1−p))², within 2^-62 |f| of f, or it lies in the
+// 64-bit enclosure of cot(fovy/2) (over aspect) that the interval oracle itself returns
+// (the enclosures nest as p grows): widening v by 2^-62 of its magnitude covers both.
+ival64 representative_enclosure(const ival64& v) {
+  if (v.is_point()) return v;
+  const long double w = ival64::up(ival64::up(std::fabs(v.mid()) + v.radius()) * 0x1p-62L);
+  return v + ival64::between(-w, w);
+}
+
+// Every pending output certainly `stable` with D no larger than the part of the sum enclosed in
+// `partial`: the terms still to come are non-negative, so D can only grow and the verdict holds.
+bool all_stable_already(const pending_outputs& pending, const std::array<bool, 16>& unbounded,
+                        const std::array<ival64, 16>& value, const std::array<ival64, 16>& partial,
+                        const double* got, double stable_constant_u) {
+  const ival64 stable = ival64::point(stable_constant_u);
+  for (std::size_t t = 0; t < pending.count; ++t) {
+    if (unbounded[t]) continue;
+    const ival64 size = magnitude(value[t]);
+    if (pending.kind[t] != pending_kind::finite) {
+      // D > 0 and c·u·D ≥ |f| for every point.
+      if (exceeds(partial[t], ival64(0)) != noted::yes || exceeds(size, ival64(stable * partial[t])) != noted::no)
+        return false;
+    } else {
+      const ival64 error = magnitude(ival64(ival64::point(got[pending.index[t]]) - value[t]));
+      if (exceeds(error, ival64(stable * ival64(size + partial[t]))) != noted::no) return false;
+    }
+  }
+  return true;
+}
+
+// decide_generic's verdicts from long double intervals, without a rational evaluation: every
+// representative f_i(x) and f_i(x ± δ_j e_j) is enclosed (representative_enclosure), so D_i
+// lies in [D_lo, D_hi] and η in the matching range, and a verdict is given only when it is the
+// same over the whole range: the verdict decide_generic reaches over rationals. False (g
+// untouched) when an interval cannot decide which outputs exist or some verdict.
+template <class F>
+bool decide_generic_enclosed(case_grade& g, const test_case& c, const conventions& conv, const double* got,
+                             const pending_outputs& pending) {
+  const operation_spec& spec = spec_of(c.op);
+  if (!spec.exact_ival64) return false;
+  const std::size_t k = spec.signature.matrix_size;
+  try {
+    const exact_outputs<ival64> e = spec.exact_ival64(c.inputs.data(), conv);
+    if (!e.defined) return false;  // the rational path says what is wrong
+    std::array<std::size_t, 16> at{};
+    std::array<ival64, 16> value{}, sensitivity{};
+    std::array<bool, 16> unbounded{};
+    for (std::size_t t = 0; t < pending.count; ++t) {
+      at[t] = canonical_index(pending.index[t], k, conv);
+      if (!e.entry_undefined.empty() && e.entry_undefined[at[t]]) return false;
+      value[t] = representative_enclosure(e.values[at[t]]);
+    }
+    std::vector<double> x = c.inputs;
+    for (std::size_t j = 0; j < x.size(); ++j) {
+      const double xj = c.inputs[j];
+      if (xj == 0) continue;
+      // Bounds of max over the steps of |f_i(x + δ) − f_i(x)| |x_j| / |δ|.
+      std::array<long double, 16> steepest_lo{}, steepest_hi{};
+      for (const double side : {1.0, -1.0})
+      for (const int step_exponent : {-20, -34, -48}) {
+        const double moved = xj + side * std::ldexp(std::fabs(xj), step_exponent);
+        bool settled = moved != xj && std::isfinite(moved);
+        exact_outputs<ival64> p;
+        if (settled) {
+          x[j] = moved;
+          p = spec.exact_ival64(x.data(), conv);  // undecided: the rational path decides
+          settled = p.defined;
+          x[j] = xj;
+        }
+        if (!settled) {
+          for (std::size_t t = 0; t < pending.count; ++t) unbounded[t] = true;
+          continue;
+        }
+        // moved and xj are within a factor 2 of each other: their difference is exact (Sterbenz).
+        const ival64 ratio = ival64::point(std::fabs(xj)) / ival64::point(std::fabs(moved - xj));
+        for (std::size_t t = 0; t < pending.count; ++t) {
+          const std::size_t i = at[t];
+          if (!p.entry_undefined.empty() && p.entry_undefined[i]) {
+            unbounded[t] = true;
+            continue;
+          }
+          const ival64 d = magnitude(ival64(representative_enclosure(p.values[i]) - value[t])) * ratio;
+          steepest_lo[t] = std::max(steepest_lo[t], std::max(0.0L, d.lower()));
+          steepest_hi[t] = std::max(steepest_hi[t], d.upper());
+        }
+      }
+      for (std::size_t t = 0; t < pending.count; ++t)
+        sensitivity[t] += ival64::between(steepest_lo[t], steepest_hi[t]);
+      if (all_stable_already(pending, unbounded, value, sensitivity, got, spec.stable_constant * unit<F>())) {
+        for (std::size_t t = 0; t < pending.count; ++t) g.outputs[pending.index[t]].v = verdict::stable;
+        return true;
+      }
+    }
+    const ival64 stable = ival64::point(spec.stable_constant * unit<F>());
+    const ival64 tau = ival64::point(wrong_threshold(c.type));
+    std::optional<bool> inputs_ranged;
+    const auto out_of_range = [&](const ival64& f) {
+      if (!inputs_ranged) inputs_ranged = inputs_out_of_range<F>(c);
+      return *inputs_ranged || value_out_of_range<ival64, F>(f);
+    };
+    std::array<verdict, 16> decided{};
+    for (std::size_t t = 0; t < pending.count; ++t) {
+      const std::size_t j = pending.index[t];
+      const ival64& f = value[t];
+      const ival64 size = magnitude(f);
+      verdict v;
+      if (pending.kind[t] != pending_kind::finite) {
+        // As over rationals: stable when D > 0 and c·u·D ≥ |f|; |f| > c·u·D settles it alone.
+        const noted above = exceeds(size, ival64(stable * sensitivity[t]));
+        if (unbounded[t] || (above != noted::yes && certain(exceeds(sensitivity[t], ival64(0))) && !certain(above)))
+          v = verdict::stable;
+        else if (out_of_range(f)) v = verdict::range;
+        else v = pending.kind[t] == pending_kind::nonfinite ? verdict::nonfinite : verdict::wrong;
+      } else {
+        const ival64 error = magnitude(ival64(ival64::point(got[j]) - f));
+        const ival64 scale = size + sensitivity[t];
+        if (unbounded[t] || !certain(exceeds(error, ival64(stable * scale)))) v = verdict::stable;
+        else if (out_of_range(f)) v = verdict::range;
+        else if (!certain(exceeds(error, ival64(tau * scale)))) v = verdict::unstable;
+        else v = verdict::wrong;
+      }
+      decided[t] = v;
+    }
+    for (std::size_t t = 0; t < pending.count; ++t) g.outputs[pending.index[t]].v = decided[t];
+    return true;
+  } catch (const undecided&) {
+    return false;
+  }
+}
+
 template <class F>
 void decide_generic(case_grade& g, const test_case& c, const conventions& conv, const double* got,
                     const pending_outputs& pending) {
@@ -433,6 +567,9 @@ void decide_pending(case_grade& g, const test_case& c, const conventions& conv, 
   if (mode == oracle_mode::filtered && decide_with_kernel(g, c, conv, got, pending, reference, cls)) return;
   const operation_spec& spec = spec_of(c.op);
   if (!spec.derivatives_rational || c.inputs.size() > max_derivative_inputs) {
+    if (mode == oracle_mode::filtered && (c.type == scalar_type::f32 ? decide_generic_enclosed<float>(g, c, conv, got, pending)
+                                                                     : decide_generic_enclosed<double>(g, c, conv, got, pending)))
+      return;
     if (c.type == scalar_type::f32) decide_generic<float>(g, c, conv, got, pending);
     else decide_generic<double>(g, c, conv, got, pending);
     return;

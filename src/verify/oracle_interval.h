@@ -40,6 +40,17 @@ class interval {
   B mid() const { return m_; }
   B radius() const { return e_; }
   bool is_point() const { return e_ == 0; }
+  /// Bounds lower() ≤ every point ≤ upper(), rounded outwards.
+  B lower() const { return e_ == 0 ? m_ : down(m_ - e_); }
+  B upper() const { return e_ == 0 ? m_ : up(m_ + e_); }
+  /// An interval holding every real in [lo, hi] (lo ≤ hi, both finite): the midpoint
+  /// lo/2 + hi/2 (halving first cannot overflow) and a radius rounded upwards past both ends.
+  static interval between(B lo, B hi) {
+    if (lo == hi) return point(lo);
+    const B m = lo / 2 + hi / 2;
+    const B e = up(std::max(m - lo, hi - m));  // each difference is within u of its exact value
+    return interval(m, up(e + B(2) * std::numeric_limits<B>::denorm_min()));  // the halving's underflow
+  }
 
   friend interval operator-(const interval& a) { return interval(-a.m_, a.e_); }
   friend interval operator+(const interval& a, const interval& b) { return sum(a, b.m_, b.e_); }
@@ -59,6 +70,20 @@ class interval {
     // |a/b − a.m/b.m| ≤ (a.e + |a.m/b.m| b.e) / (|b.m| − b.e), and |a.m/b.m| ≤ |q| (1 + u).
     const B e = (a.e_ + std::fabs(q) * b.e_ * (B(1) + 2 * unit())) / lower * inflate() + rounding(q);
     return interval(q, e * inflate());
+  }
+  // √a for a ≥ 0 (throws undecided when a may hold a negative point). A point whose root is
+  // exact stays a point; otherwise the correctly rounded roots of the outward ends (IEEE sqrt
+  // is correctly rounded, |RN(√x) − √x| ≤ u √x), each pushed outwards past that error.
+  friend interval sqrt(const interval& a) {
+    const B lo = a.lower(), hi = a.upper();
+    if (std::isnan(lo) || std::isnan(hi) || !std::isfinite(hi) || lo < 0) throw undecided{};
+    if (a.e_ == 0) {
+      if (a.m_ == 0) return interval();
+      const B r = std::sqrt(a.m_);
+      if (product_is_exact(r, r, a.m_)) return point(r);
+      return interval(r, up(rounding(r)));
+    }
+    return between(std::max(B(0), down(std::sqrt(lo))), up(std::sqrt(hi)));
   }
   interval& operator+=(const interval& b) { return *this = *this + b; }
   interval& operator-=(const interval& b) { return *this = *this - b; }

@@ -1,8 +1,13 @@
 #pragma once
 // What the operations with irrational exact values share (perspective-fov, look-at,
-// target-to): their exact outputs are correctly rounding representatives
-// (constructions/irrational.h), decided by MPFR enclosures at increasing precision, so only
-// the rational oracle computes them; the interval oracles defer to it at once.
+// target-to). Over rationals their exact outputs are correctly rounding representatives
+// (constructions/irrational.h): the lower end of the first MPFR enclosure, at 64, 128, … bits,
+// whose ends round alike, decided by Ziv's strategy. Over intervals they are enclosures of
+// the exact values themselves (√ of an interval, cot(fovy/2) from a 64-bit MPFR enclosure),
+// which decide the rounding in nearly every case; an interval that does not throws
+// `undecided`, and the rational oracle decides.
+#include <cmath>
+#include <cstddef>
 #include <type_traits>
 
 #include "../operation_table.h"
@@ -11,17 +16,19 @@
 
 namespace shadowproof::detail {
 
-/// Calls `exact()` (the rational computation) for N = rational; for the interval types throws
-/// `undecided`, which sends the case to the rational oracle. Grading up to scale would scale
-/// the representatives, not the exact values, and could misjudge a rounding: refused.
-template <class N, class Exact>
-exact_outputs<N> irrational_outputs(const conventions& conv, const char* op, Exact exact) {
+/// Throws verify.irrational_scale when the case is graded up to scale: that would scale the
+/// representatives, not the exact values, and could misjudge a rounding.
+inline void refuse_grading_up_to_scale(const conventions& conv, const char* op) {
   if (conv.homogeneous)
     throw error(errc::verify_irrational_scale,
                 std::string(op) + ": its exact values are irrational, so it cannot be graded up to scale "
                                   "(--homogeneous); grade the matrix as it is");
-  if constexpr (std::is_same_v<N, rational>) return exact();
-  else throw undecided{};
+}
+
+/// Every input finite, or throws `undecided` (the rational oracle says what the others mean).
+inline void require_finite_inputs(const double* in, std::size_t count) {
+  for (std::size_t i = 0; i < count; ++i)
+    if (!std::isfinite(in[i])) throw undecided{};
 }
 
 }  // namespace shadowproof::detail

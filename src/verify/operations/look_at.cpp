@@ -9,6 +9,7 @@
 // (x and y rows undefined) or eye = target (every axis undefined).
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 #include "irrational_entries.h"
 #include "shadowproof/constructions/look_at.h"
@@ -39,10 +40,32 @@ exact_outputs<rational> exact_rational(const double* in, const conventions& conv
   return r;
 }
 
+// The same entries q/√s over intervals: q and s by the same exact formulas, outward rounded,
+// then √s (oracle_interval.h) and the quotient. Whether |X|² or |W|² vanishes is decided or
+// throws `undecided`, so an entry is undefined exactly when it is over rationals.
+template <class N, bool placement>
+exact_outputs<N> enclosed(const double* in, const conventions& conv) {
+  require_finite_inputs(in, 9);
+  const auto vec = [](const double* x) { return vec3<N>{N::point(x[0]), N::point(x[1]), N::point(x[2])}; };
+  const vec3<N> eye = vec(in), target = vec(in + 3), up = vec(in + 6);
+  const auto entries =
+      placement ? target_to_entries(eye, target, up, conv.hand) : look_at_entries(eye, target, up, conv.hand);
+  exact_outputs<N> r;
+  r.entry_undefined.assign(16, false);
+  for (std::size_t i = 0; i < 16; ++i) {
+    const root_entry<N>& e = entries[i];
+    if (!e.defined) r.entry_undefined[i] = true;
+    const bool zero = !e.defined || (e.numerator.is_point() && e.numerator.mid() == 0);
+    r.values.push_back(zero ? N(0) : N(e.numerator / sqrt(e.radicand)));
+  }
+  return r;
+}
+
 template <class N, bool placement>
 exact_outputs<N> exact(const double* in, const conventions& conv) {
-  return irrational_outputs<N>(conv, placement ? "target-to" : "look-at",
-                               [&] { return exact_rational<placement>(in, conv); });
+  refuse_grading_up_to_scale(conv, placement ? "target-to" : "look-at");
+  if constexpr (std::is_same_v<N, rational>) return exact_rational<placement>(in, conv);
+  else return enclosed<N, placement>(in, conv);
 }
 
 // Integer coordinates in [−64, 64] for a degenerate case, so that eye − target and its

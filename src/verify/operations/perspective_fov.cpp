@@ -9,8 +9,11 @@
 // view within 2^-k of 0 or of 180°; degenerate = n = f (the depth entries undefined), for the
 // infinite one fovy = 0 (the focal scales (0,0) and (1,1) undefined, the depth entries exist).
 // fovy outside [0, π), aspect ≤ 0, n ≤ 0 or f ≤ 0 admit no projection: every output undefined.
+#include <mpfr.h>
+
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 #include "irrational_entries.h"
 #include "view_volume.h"
@@ -54,10 +57,80 @@ exact_outputs<rational> exact_rational(const double* in, const conventions& conv
   return r;
 }
 
+// lo ≤ cot(fovy/2) ≤ hi: the 64-bit MPFR enclosure of cot_half_angle read into long double,
+// whose 64-bit significand holds both ends exactly. The last angle is remembered per thread:
+// the verdicts' sensitivities evaluate the same angle while they perturb the other inputs.
+struct cot_bounds {
+  long double lo, hi;
+};
+cot_bounds cot_half_angle_64(double fovy, angle_unit unit) {
+  thread_local double last_fovy = std::numeric_limits<double>::quiet_NaN();
+  thread_local angle_unit last_unit = angle_unit::radians;
+  thread_local cot_bounds last{};
+  if (fovy == last_fovy && unit == last_unit) return last;
+  const enclosure e = cot_half_angle(fovy, unit, 64);
+  mpfr_t x;
+  mpfr_init2(x, 64);
+  mpfr_set_q(x, e.lo.get_mpq_t(), MPFR_RNDD);  // exact: a 64-bit number
+  const long double lo = mpfr_get_ld(x, MPFR_RNDD);
+  mpfr_set_q(x, e.hi.get_mpq_t(), MPFR_RNDU);
+  const long double hi = mpfr_get_ld(x, MPFR_RNDU);
+  mpfr_clear(x);
+  last_fovy = fovy;
+  last_unit = unit;
+  last = {lo, hi};
+  return last;
+}
+
+// [lo, hi] as an interval over B, rounded outwards when B is narrower than long double.
+template <class B>
+interval<B> enclosing(long double lo, long double hi) {
+  B l = static_cast<B>(lo), h = static_cast<B>(hi);
+  if (static_cast<long double>(l) > lo) l = std::nextafter(l, -std::numeric_limits<B>::infinity());
+  if (static_cast<long double>(h) < hi) h = std::nextafter(h, std::numeric_limits<B>::infinity());
+  return interval<B>::between(l, h);
+}
+
+// The same outputs over intervals: the depth rows by the same exact formulas, the focal scales
+// from the 64-bit enclosure of cot(fovy/2). Which outputs exist is decided on the doubles
+// themselves, exactly as over rationals.
+template <class N, bool infinite>
+exact_outputs<N> enclosed(const double* in, const conventions& conv) {
+  using B = decltype(N().mid());
+  require_finite_inputs(in, infinite ? 3 : 4);
+  exact_outputs<N> r;
+  const double fovy = in[0];
+  const bool no_field = fovy == 0;
+  if ((!no_field && !field_of_view_in_range(fovy, conv.angle)) || !(in[1] > 0) || !(in[2] > 0) ||
+      (!infinite && !(in[3] > 0))) {
+    r.set_undefined(16);
+    return r;
+  }
+  r.entry_undefined.assign(16, false);
+  const N aspect = N::point(in[1]), n = N::point(in[2]);
+  N f = infinite ? N(0) : N::point(in[3]);
+  if (!infinite && in[3] == in[2]) {
+    r.entry_undefined[2 * 4 + 2] = r.entry_undefined[2 * 4 + 3] = true;
+    f = n + N(1);
+  }
+  mat4<N> M = perspective(N(1), N(1), n, f, conv.depth, infinite);
+  if (no_field) {
+    r.entry_undefined[0] = r.entry_undefined[5] = true;
+    M(0, 0) = M(1, 1) = N(0);
+  } else {
+    const cot_bounds c = cot_half_angle_64(fovy, conv.angle);
+    M(1, 1) = enclosing<B>(c.lo, c.hi);
+    M(0, 0) = M(1, 1) / aspect;
+  }
+  r.set_matrix(with_handedness(M, conv.hand));
+  return r;
+}
+
 template <class N, bool infinite>
 exact_outputs<N> exact(const double* in, const conventions& conv) {
-  return irrational_outputs<N>(conv, infinite ? "perspective-fov-infinite" : "perspective-fov",
-                               [&] { return exact_rational<infinite>(in, conv); });
+  refuse_grading_up_to_scale(conv, infinite ? "perspective-fov-infinite" : "perspective-fov");
+  if constexpr (std::is_same_v<N, rational>) return exact_rational<infinite>(in, conv);
+  else return enclosed<N, infinite>(in, conv);
 }
 
 double positive(case_rng& r, int emin, int emax) {
