@@ -51,7 +51,22 @@ inline ft to_ft(const rational& q) { return to_field<ft>(q); }
 /// The rational equal to x (forces the exact value of a lazy number).
 inline rational to_q(const ft& x) { return from_field<ft>(x); }
 
-inline cpoint to_cpoint(const point2& p) { return cpoint(to_ft(p[0]), to_ft(p[1])); }
+/// The kernel's point equal to p. With the lazy kernel the point is made a leaf holding its
+/// exact value (and the interval around it): built from two lazy numbers it would be a node
+/// whose exact value is recomputed, under a lock, the first time a predicate needs it, which
+/// the arrangement's sweep does for every endpoint shared by two segments.
+/// (A template, so that only the branch of the kernel in use is instantiated.)
+template <class P = cpoint>
+P to_cpoint(const point2& p) {
+  if constexpr (std::is_same_v<kernel, CGAL::Exact_predicates_exact_constructions_kernel>) {
+    using exact_kernel = typename kernel::Exact_kernel;
+    using eft = typename exact_kernel::FT;
+    if constexpr (std::is_same_v<eft, rational>) return P(typename P::Rep(typename exact_kernel::Point_2(p[0], p[1])));
+    else return P(typename P::Rep(typename exact_kernel::Point_2(eft(p[0].get_mpq_t()), eft(p[1].get_mpq_t()))));
+  } else {
+    return P(to_ft(p[0]), to_ft(p[1]));
+  }
+}
 /// The rational point equal to p. With the lazy kernel the point's exact value is forced
 /// once and read directly: p.x() and p.y() would each build and force a new lazy number.
 /// (A template, so that only the branch of the kernel in use is instantiated.)

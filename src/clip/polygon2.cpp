@@ -1,12 +1,14 @@
 // Exact polygon utilities over rationals (see polygon2.h).
 #include "polygon2.h"
 
+#include <CGAL/Interval_nt.h>
 #include <CGAL/Partition_traits_2.h>
 #include <CGAL/Polygon_2.h>
 #include <CGAL/partition_2.h>
 #include <CGAL/property_map.h>
 
 #include <algorithm>
+#include <cmath>
 #include <iterator>
 #include <list>
 #include <numeric>
@@ -64,6 +66,37 @@ point3 plane_normal(const std::vector<point3>& v) {
 
 namespace {
 
+// A rational's nearest doubles below and above it, in the range where GMP's truncating
+// conversion is within one ulp (else false: decide exactly).
+bool bracket(const rational& q, CGAL::Interval_nt<false>& out) {
+  const double d = q.get_d();
+  if (d == 0) {
+    if (sgn(q) != 0) return false;
+    out = CGAL::Interval_nt<false>(0);
+    return true;
+  }
+  const double m = std::fabs(d);
+  if (!(m > 0x1p-400 && m < 0x1p400)) return false;
+  out = CGAL::Interval_nt<false>(std::nextafter(d, -HUGE_VAL), std::nextafter(d, HUGE_VAL));
+  return true;
+}
+
+// The sign of orient2(a, b, c): in interval arithmetic when that decides it, else exactly.
+// Only (nearly) collinear triples pay for rationals.
+int orient2_sign(const point2& a, const point2& b, const point2& c) {
+  CGAL::Interval_nt<false> v[6];
+  const rational* q[6] = {&a[0], &a[1], &b[0], &b[1], &c[0], &c[1]};
+  bool filtered = true;
+  for (int i = 0; i < 6 && filtered; ++i) filtered = bracket(*q[i], v[i]);
+  if (filtered) {
+    CGAL::Protect_FPU_rounding<true> up;
+    const auto o = (v[2] - v[0]) * (v[5] - v[1]) - (v[3] - v[1]) * (v[4] - v[0]);
+    const CGAL::Uncertain<CGAL::Sign> s = CGAL::sign(o);
+    if (CGAL::is_certain(s)) return static_cast<int>(CGAL::get_certain(s));
+  }
+  return sgn(orient2(a, b, c));
+}
+
 // (b − a)·(d − b): > 0 when a → b → d goes on in the same direction.
 rational forward(const point2& a, const point2& b, const point2& d) {
   return (b[0] - a[0]) * (d[0] - b[0]) + (b[1] - a[1]) * (d[1] - b[1]);
@@ -91,7 +124,7 @@ std::vector<std::size_t> straight_vertices(const std::vector<point2>& c) {
     const auto& a = c[(i + n - 1) % n];
     const auto& b = c[i];
     const auto& d = c[(i + 1) % n];
-    if (sgn(orient2(a, b, d)) == 0 && sgn(forward(a, b, d)) > 0) out.push_back(i);
+    if (orient2_sign(a, b, d) == 0 && sgn(forward(a, b, d)) > 0) out.push_back(i);
   }
   // Every vertex straight is impossible for a closed polygon with area; keep the input then
   // (the caller's zero-area test rejects it).
@@ -209,7 +242,6 @@ std::vector<point2> canonical_ring(std::vector<point2> ring) {
 }
 
 namespace {
-
 // True when the counter-clockwise angle from a to x is smaller than from a to y (angles in
 // [0, 2π), exact: by half-plane, then by the cross product).
 bool ccw_before(const point2& a, const point2& x, const point2& y) {
@@ -234,9 +266,22 @@ std::vector<std::vector<point2>> component_cycles(const std::vector<std::vector<
   std::vector<const point2*> corners;
   for (const auto& w : walks)
     for (const auto& p : w) corners.push_back(&p);
+  // Compared by their truncated doubles first: GMP's conversion is monotone, so different
+  // doubles order the rationals and only equal ones are compared exactly.
+  std::vector<std::array<double, 2>> approx(corners.size());
+  for (std::size_t k = 0; k < corners.size(); ++k) approx[k] = {(*corners[k])[0].get_d(), (*corners[k])[1].get_d()};
+  const auto less = [&](std::size_t x, std::size_t y) {
+    for (std::size_t i = 0; i < 2; ++i) {
+      const double dx = approx[x][i], dy = approx[y][i];
+      if (std::isfinite(dx) && std::isfinite(dy) && dx != dy) return dx < dy;
+      const int c = cmp((*corners[x])[i], (*corners[y])[i]);
+      if (c != 0) return c < 0;
+    }
+    return false;
+  };
   std::vector<std::size_t> order(corners.size());
   std::iota(order.begin(), order.end(), std::size_t(0));
-  std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return *corners[x] < *corners[y]; });
+  std::sort(order.begin(), order.end(), less);
   std::vector<std::size_t> id(corners.size());
   std::vector<const point2*> point_of;
   for (auto k : order) {
@@ -288,6 +333,29 @@ std::vector<std::vector<point2>> component_cycles(const std::vector<std::vector<
   return cycles;
 }
 
+// The orientation of a boundary cycle of one connected open piece (the piece on its left, the
+// cycle never crossing itself): the turn at its lexicographically smallest vertex when that
+// vertex is visited once and is not straight — both edges there leave into the half-plane
+// x ≥ v.x, so the turn is the cycle's orientation, as for a simple polygon — else the sign
+// of the area. One orient2 instead of a sum over every vertex.
+int cycle_orientation(const std::vector<point2>& c) {
+  const std::size_t n = c.size();
+  std::size_t m = 0, visits = 1;
+  for (std::size_t i = 1; i < n; ++i) {
+    if (c[i] < c[m]) {
+      m = i;
+      visits = 1;
+    } else if (c[i] == c[m]) {
+      ++visits;
+    }
+  }
+  if (visits == 1 && n >= 3) {
+    const int turn = sgn(orient2(c[(m + n - 1) % n], c[m], c[(m + 1) % n]));
+    if (turn != 0) return turn;
+  }
+  return sgn(signed_area(c));
+}
+
 // Exact point-in-polygon by the crossing number; q must not lie on the ring's boundary.
 bool inside_ring(const std::vector<point2>& ring, const point2& q) {
   bool in = false;
@@ -317,16 +385,17 @@ std::vector<region_polygon> canonical_polygons(std::vector<ring_with_holes> poly
     for (auto& h : p.second) walks.push_back(std::move(h));
     for (auto& cycle : component_cycles(walks)) {
       erase_indices(cycle, straight_vertices(cycle));
-      const int orientation = sgn(signed_area(cycle));
+      const int orientation = cycle_orientation(cycle);
       if (orientation > 0) outers.push_back(canonical_ring(std::move(cycle)));
       else if (orientation < 0) holes.push_back(canonical_ring(std::move(cycle)));
       else throw internal_error("a region boundary encloses no area");
     }
     if (outers.empty()) throw internal_error("a region polygon has no outer boundary");
     const std::size_t first = grouped.size();
+    // Areas only to tell nested pieces apart, so only when a hole has several candidates.
     std::vector<rational> outer_area;
     for (auto& o : outers) {
-      outer_area.push_back(signed_area(o));
+      if (outers.size() > 1 && !holes.empty()) outer_area.push_back(signed_area(o));
       grouped.push_back({std::move(o), {}});
     }
     for (auto& h : holes) {

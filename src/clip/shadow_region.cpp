@@ -38,7 +38,11 @@ point3 receiver_chart::lift(const point2& q) const {
   X[i] = q[0];
   X[j] = q[1];
   const auto& p = receiver_plane.p;
-  X[k] = -(p[3] + p[i] * q[0] + p[j] * q[1]) / p[k];
+  // Zero coefficients skipped: receivers are often axis-aligned.
+  rational w = p[3];
+  if (sgn(p[i]) != 0) w += p[i] * q[0];
+  if (sgn(p[j]) != 0) w += p[j] * q[1];
+  X[k] = -w / p[k];
   return X;
 }
 

@@ -7,7 +7,6 @@
 #include <CGAL/Arr_segment_traits_2.h>
 #include <CGAL/Arrangement_2.h>
 
-#include <deque>
 #include <numeric>
 #include <optional>
 
@@ -27,17 +26,20 @@ namespace {
 // receiver's winding when crossed from its right to its left, both counted for the curve
 // directed from its lexicographically smaller end to its larger one, and whether it carries a
 // zero-area shadow piece. Overlapping curves add up.
+// It also names the input segment it lies on (`line`, into a table of segments): every piece
+// of an overlap lies on the supporting line of each, so either one will do.
 struct curve_data {
   long shadow = 0;
   long receiver = 0;
   bool degenerate = false;
+  std::size_t line = 0;
   friend bool operator==(const curve_data& a, const curve_data& b) {
     return a.shadow == b.shadow && a.receiver == b.receiver && a.degenerate == b.degenerate;
   }
 };
 struct merge_data {
   curve_data operator()(const curve_data& a, const curve_data& b) const {
-    return {a.shadow + b.shadow, a.receiver + b.receiver, a.degenerate || b.degenerate};
+    return {a.shadow + b.shadow, a.receiver + b.receiver, a.degenerate || b.degenerate, a.line};
   }
 };
 struct face_data {
@@ -58,11 +60,64 @@ using xcurve = traits::X_monotone_curve_2;
 using face_handle = arrangement::Face_handle;
 using halfedge_handle = arrangement::Halfedge_handle;
 
-// The x-monotone curve a → b with `shadow` and `receiver` counted along a → b.
-xcurve make_curve(const cpoint& a, const cpoint& b, long shadow, long receiver, bool degenerate) {
-  const bool forward = CGAL::compare_xy(a, b) == CGAL::SMALLER;
+// The supporting lines of the input segments, as A x + B y = C with integer coefficients
+// (computed when first asked for): an arrangement vertex lies on the line of every curve
+// through it, so two of them that are not parallel give its exact coordinates by Cramer's
+// rule, x = (C₁B₂ − C₂B₁)/D, y = (A₁C₂ − A₂C₁)/D with D = A₁B₂ − A₂B₁ — a few integer
+// products, where forcing the lazy kernel's value of a crossing re-evaluates its whole
+// construction, under a lock, at several times the cost.
+class segment_lines {
+ public:
+  /// Adds the segment a → b (a ≠ b) and returns its index.
+  std::size_t add(const point2& a, const point2& b) {
+    ends_.push_back({a, b});
+    return ends_.size() - 1;
+  }
+  /// The intersection of the lines of segments i and j, or nullopt when they are parallel.
+  std::optional<point2> meet(std::size_t i, std::size_t j) {
+    if (lines_.size() < ends_.size()) lines_.resize(ends_.size());
+    const line &l = get(i), &m = get(j);
+    mpz_class d = l.a * m.b - m.a * l.b;
+    if (sgn(d) == 0) return std::nullopt;
+    rational x(l.c * m.b - m.c * l.b, d), y(l.a * m.c - m.a * l.c, d);
+    x.canonicalize();
+    y.canonicalize();
+    return point2{std::move(x), std::move(y)};
+  }
+
+ private:
+  struct line {
+    mpz_class a, b, c;
+  };
+  const line& get(std::size_t i) {
+    auto& l = lines_[i];
+    if (!l) {
+      const auto& [p, q] = ends_[i];
+      // (q_y − p_y) x + (p_x − q_x) y = (q_y − p_y) p_x + (p_x − q_x) p_y, times the lcm of
+      // the denominators.
+      const rational a = q[1] - p[1], b = p[0] - q[0], c = a * p[0] + b * p[1];
+      mpz_class scale;
+      mpz_lcm(scale.get_mpz_t(), a.get_den_mpz_t(), b.get_den_mpz_t());
+      mpz_lcm(scale.get_mpz_t(), scale.get_mpz_t(), c.get_den_mpz_t());
+      l = line{a.get_num() * (scale / a.get_den()), b.get_num() * (scale / b.get_den()), c.get_num() * (scale / c.get_den())};
+    }
+    return *l;
+  }
+  std::vector<std::array<point2, 2>> ends_;
+  std::vector<std::optional<line>> lines_;
+};
+
+// The x-monotone curve a → b (pa → pb in the kernel) with `shadow` and `receiver` counted
+// along a → b, registered in `lines`.
+xcurve make_curve(segment_lines& lines, const point2& a, const point2& b, const cpoint& pa, const cpoint& pb, long shadow,
+                  long receiver, bool degenerate) {
+  const bool forward = CGAL::compare_xy(pa, pb) == CGAL::SMALLER;
   const long sign = forward ? 1 : -1;
-  return xcurve(segment_traits::X_monotone_curve_2(a, b), curve_data{sign * shadow, sign * receiver, degenerate});
+  return xcurve(segment_traits::X_monotone_curve_2(pa, pb),
+                curve_data{sign * shadow, sign * receiver, degenerate, lines.add(a, b)});
+}
+xcurve make_curve(segment_lines& lines, const point2& a, const point2& b, long shadow, long receiver, bool degenerate) {
+  return make_curve(lines, a, b, to_cpoint(a), to_cpoint(b), shadow, receiver, degenerate);
 }
 
 // The data of h's curve counted along h.
@@ -76,7 +131,9 @@ curve_data along(const halfedge_handle& h) {
 // twin's face) to its left (its own face) adds along(h).
 void assign_windings(arrangement& arr) {
   for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f) f->data() = face_data{};
-  std::deque<face_handle> todo;
+  // Any order of the walk gives the same numbers (the chains are closed): a stack.
+  std::vector<face_handle> todo;
+  todo.reserve(arr.number_of_faces());
   const face_handle unbounded = arr.unbounded_face();
   unbounded->data().reached = true;
   todo.push_back(unbounded);
@@ -94,8 +151,8 @@ void assign_windings(arrangement& arr) {
     } while (++h != first);
   };
   while (!todo.empty()) {
-    const face_handle f = todo.front();
-    todo.pop_front();
+    const face_handle f = todo.back();
+    todo.pop_back();
     if (f->has_outer_ccb()) visit_ccb(f, f->outer_ccb());
     for (auto in = f->inner_ccbs_begin(); in != f->inner_ccbs_end(); ++in) visit_ccb(f, *in);
   }
@@ -111,9 +168,11 @@ void assign_windings(arrangement& arr) {
 // The arrangement's vertices as rationals, each converted once and only when asked for:
 // the exact value of an intersection point is costly to force, and only the vertices on the
 // region's boundary and on its zero-area pieces are ever asked for.
+// A vertex is the meeting point of the lines of two of its curves that are not parallel; only
+// a vertex whose curves all lie on one line (or none) asks the kernel.
 class exact_points {
  public:
-  explicit exact_points(arrangement& arr) {
+  exact_points(arrangement& arr, segment_lines& lines) : lines_(lines) {
     std::size_t i = 0;
     for (auto v = arr.vertices_begin(); v != arr.vertices_end(); ++v) v->data().index = i++;
     points_.resize(i);
@@ -121,11 +180,26 @@ class exact_points {
   template <class Vertex>
   const point2& operator()(const Vertex& v) {
     auto& p = points_[v->data().index];
-    if (!p) p = to_point2(v->point());
+    if (!p) p = compute(v);
     return *p;
   }
 
  private:
+  template <class Vertex>
+  point2 compute(const Vertex& v) {
+    if (!v->is_isolated()) {
+      auto c = v->incident_halfedges();
+      const auto first = c;
+      const std::size_t l = c->curve().data().line;
+      while (++c != first) {
+        const std::size_t m = c->curve().data().line;
+        if (m == l) continue;
+        if (auto p = lines_.meet(l, m)) return std::move(*p);
+      }
+    }
+    return to_point2(v->point());
+  }
+  segment_lines& lines_;
   std::vector<std::optional<point2>> points_;
 };
 
@@ -207,12 +281,14 @@ void for_each_face_around(const arrangement::Vertex_handle& v, F f) {
   } while (++c != first);
 }
 
-void add_chain(std::vector<xcurve>& curves, const caster_chain& chain) {
+void add_chain(std::vector<xcurve>& curves, segment_lines& lines, const caster_chain& chain) {
   std::vector<cpoint> points;
   points.reserve(chain.points.size());
   for (const auto& p : chain.points) points.push_back(to_cpoint(p));
   for (const auto& s : chain.segments)
-    if (s.weight != 0) curves.push_back(make_curve(points[s.a], points[s.b], s.weight, 0, false));
+    if (s.weight != 0)
+      curves.push_back(
+          make_curve(lines, chain.points[s.a], chain.points[s.b], points[s.a], points[s.b], s.weight, 0, false));
 }
 
 }  // namespace
@@ -240,24 +316,24 @@ shadow_region silhouette_region(const scene& s, const plane<rational>& P, const 
   report("arrangement", total_faces);
 
   std::vector<xcurve> curves;
-  for (const auto& chain : chains) add_chain(curves, chain);
+  segment_lines lines;
+  for (const auto& chain : chains) add_chain(curves, lines, chain);
   const auto add_ring = [&](const std::vector<point2>& boundary) {
     for (std::size_t i = 0; i < boundary.size(); ++i)
-      curves.push_back(
-          make_curve(to_cpoint(boundary[i]), to_cpoint(boundary[(i + 1) % boundary.size()]), 0, 1, false));
+      curves.push_back(make_curve(lines, boundary[i], boundary[(i + 1) % boundary.size()], 0, 1, false));
   };
   add_ring(setup.receiver_outer);
   for (const auto& h : setup.receiver_holes) add_ring(h);  // clockwise: −1 inside
   std::vector<point2> degenerate_points;
   for (const auto& d : degenerate) {
     if (d[0] == d[1]) degenerate_points.push_back(d[0]);
-    else curves.push_back(make_curve(to_cpoint(d[0]), to_cpoint(d[1]), 0, 0, true));
+    else curves.push_back(make_curve(lines, d[0], d[1], 0, 0, true));
   }
   arrangement arr;
   CGAL::insert(arr, curves.begin(), curves.end());
   for (const auto& p : degenerate_points) CGAL::insert_point(arr, to_cpoint(p))->data().degenerate_point = true;
   assign_windings(arr);
-  exact_points points(arr);
+  exact_points points(arr, lines);
 
   const auto in_shadow = [](const auto& f) { return f->data().shadow > 0; };
   const auto in_receiver = [](const auto& f) { return f->data().receiver > 0; };
@@ -270,11 +346,12 @@ shadow_region silhouette_region(const scene& s, const plane<rational>& P, const 
     std::vector<rational> areas;
     for (const auto& chain : chains) {
       std::vector<xcurve> own;
-      add_chain(own, chain);
+      segment_lines own_lines;
+      add_chain(own, own_lines, chain);
       arrangement one;
       CGAL::insert(one, own.begin(), own.end());
       assign_windings(one);
-      exact_points own_points(one);
+      exact_points own_points(one, own_lines);
       areas.push_back(region_boundary(one, own_points, in_shadow).area);
     }
     if (balanced_sum(std::move(areas)) != shadow_rings->area) cases.insert(shadow_case::shadows_overlap);
