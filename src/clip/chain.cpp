@@ -146,11 +146,11 @@ caster_chain build_chain(const clip_setup& setup, std::size_t ci, case_set& case
     if (inside && !g.collinear && !g.edge_on && !setup.grazing()) {
       // Inside the clip region the projection maps the face's plane one to one: the whole
       // face's boundary, oriented counter-clockwise, with its straight vertices dropped.
-      std::vector<point2> ring;
-      ring.reserve(g.v.size());
-      for (const auto& p : g.v) ring.push_back(setup.project(p));
-      if (sgn(signed_area(ring)) < 0) std::reverse(ring.begin(), ring.end());
-      polygons.push_back(std::move(ring));
+      std::vector<point2> outline;
+      outline.reserve(g.v.size());
+      for (const auto& p : g.v) outline.push_back(setup.project(p));
+      if (sgn(signed_area(outline)) < 0) std::reverse(outline.begin(), outline.end());
+      polygons.push_back(std::move(outline));
       return;
     }
     cast_face(setup, g, cases, polygons, degenerate);
@@ -264,11 +264,12 @@ caster_chain build_chain(const clip_setup& setup, std::size_t ci, case_set& case
   }
   // Faces projected whole or in pieces: their edges as they are (the arrangement cancels
   // shared ones geometrically).
-  for (auto& ring : polygons) {
-    out.half_edges += ring.size();
+  for (auto& outline : polygons) {
+    out.half_edges += outline.size();
     const std::size_t first = out.points.size();
-    for (auto& p : ring) out.points.push_back(std::move(p));
-    for (std::size_t i = 0; i < ring.size(); ++i) out.segments.push_back({first + i, first + (i + 1) % ring.size(), 1});
+    for (auto& p : outline) out.points.push_back(std::move(p));
+    for (std::size_t i = 0; i < outline.size(); ++i)
+      out.segments.push_back({first + i, first + (i + 1) % outline.size(), 1});
   }
   return out;
 }

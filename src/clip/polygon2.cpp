@@ -195,10 +195,10 @@ std::vector<std::vector<std::size_t>> convex_pieces(const std::vector<point2>& p
   for (const auto& piece : pieces) {
     out.emplace_back(piece.vertices_begin(), piece.vertices_end());
     // The partition keeps the input's orientation; make sure, the pieces are clipped as CCW.
-    std::vector<point2> ring;
-    for (auto i : out.back()) ring.push_back(p[i]);
-    if (sgn(signed_area(ring)) < 0) std::reverse(out.back().begin(), out.back().end());
-    if (sgn(signed_area(ring)) == 0) throw internal_error("convex partition produced a piece without area");
+    std::vector<point2> corners;
+    for (auto i : out.back()) corners.push_back(p[i]);
+    if (sgn(signed_area(corners)) < 0) std::reverse(out.back().begin(), out.back().end());
+    if (sgn(signed_area(corners)) == 0) throw internal_error("convex partition produced a piece without area");
   }
   return out;
 }
@@ -222,14 +222,14 @@ std::optional<std::array<point2, 2>> segment_intersection(const point2& a, const
   return std::array<point2, 2>{x, x};
 }
 
-std::vector<point2> canonical_ring(std::vector<point2> ring) {
-  const std::size_t n = ring.size();
+std::vector<point2> canonical_ring(std::vector<point2> cycle) {
+  const std::size_t n = cycle.size();
   std::size_t best = 0;
   for (std::size_t s = 1; s < n; ++s) {
     // Compare the rotations starting at s and at best, element by element.
     for (std::size_t i = 0; i < n; ++i) {
-      const auto& x = ring[(s + i) % n];
-      const auto& y = ring[(best + i) % n];
+      const auto& x = cycle[(s + i) % n];
+      const auto& y = cycle[(best + i) % n];
       if (x < y) {
         best = s;
         break;
@@ -237,8 +237,8 @@ std::vector<point2> canonical_ring(std::vector<point2> ring) {
       if (y < x) break;
     }
   }
-  std::rotate(ring.begin(), ring.begin() + static_cast<std::ptrdiff_t>(best), ring.end());
-  return ring;
+  std::rotate(cycle.begin(), cycle.begin() + static_cast<std::ptrdiff_t>(best), cycle.end());
+  return cycle;
 }
 
 namespace {

@@ -106,7 +106,7 @@ std::optional<std::array<point2, 2>> segment_intersection(const point2& a, const
 
 /// A ring rotated to start at the rotation that is lexicographically smallest as a sequence
 /// (so that two traversals of one boundary compare equal).
-std::vector<point2> canonical_ring(std::vector<point2> ring);
+std::vector<point2> canonical_ring(std::vector<point2> cycle);
 
 /// An outer ring (counter-clockwise) with its holes (clockwise).
 using ring_with_holes = std::pair<std::vector<point2>, std::vector<std::vector<point2>>>;
