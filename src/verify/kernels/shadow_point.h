@@ -15,6 +15,15 @@ R sign_value(R x) {
   return select(x > R(0.0), R(1.0), R(-1.0));
 }
 
+/// The canonical light, in place: a directional light (w = 0) given along its rays is negated
+/// (exact); L[4] as given.
+template <class R>
+void canonical_light_lanes(R* L, const conventions& conv) {
+  const R flip = select(L[3] == R(0.0), R(conv.light == light_sign::along_rays ? -1.0 : 1.0), R(1.0));
+  SHADOWPROOF_UNROLL
+  for (int i = 0; i < 3; ++i) L[i] = L[i] * flip;
+}
+
 /// x = P[4], L[4] (as given), V[3]; writes the three outputs and the class (its point_class
 /// value as a real) and returns the mask of lanes decided: s, t and D clearly nonzero, V not
 /// the light, every output's rounding decided. The classes decided here are shadow,
@@ -22,10 +31,7 @@ R sign_value(R x) {
 template <class F, class R>
 auto shadow_point_lanes(R* x, const conventions& conv, R* values, R& cls) {
   using N = filter_number_of<F, R>;
-  // The canonical light: a directional light given along its rays is negated (exact).
-  const R flip = select(x[7] == R(0.0), R(conv.light == light_sign::along_rays ? -1.0 : 1.0), R(1.0));
-  SHADOWPROOF_UNROLL
-  for (int i = 4; i < 7; ++i) x[i] = x[i] * flip;
+  canonical_light_lanes(x + 4, conv);
   auto ok = kernel_inputs<F, 3, 11>(x);
   const R* P = x;
   const R* L = x + 4;
@@ -114,9 +120,7 @@ auto image_side_lanes(const R* L, const R* V, const N* light_to_v, const N& b, c
 template <class F, class R>
 auto shadow_image_lanes(R* x, const conventions& conv, R* values, R& cls) {
   using N = filter_number_of<F, R>;
-  const R flip = select(x[7] == R(0.0), R(conv.light == light_sign::along_rays ? -1.0 : 1.0), R(1.0));
-  SHADOWPROOF_UNROLL
-  for (int i = 4; i < 7; ++i) x[i] = x[i] * flip;
+  canonical_light_lanes(x + 4, conv);
   const auto in_range = kernel_inputs<F, 4, 11>(x);  // a: w² G V, degree 4
   const R* P = x;
   const R* L = x + 4;
