@@ -31,7 +31,7 @@ using batch_filter = void (*)(const double* const* in, std::size_t count, const 
                               const batch_filter_out& out);
 
 /// The generic filter of (op, type), or null for an operation without one (the camera builders
-/// with irrational values and the size builders: their cases go one by one).
+/// with irrational values: their cases go one by one).
 batch_filter generic_batch_filter(operation op, scalar_type type);
 
 /// The AVX2 filter of (op, type), or null when this build has none (not x86-64, or the

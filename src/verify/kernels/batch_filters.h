@@ -4,6 +4,7 @@
 // aliasing between inputs and outputs), filtered lane by lane, and copied out.
 #include <cstddef>
 #include <cstdint>
+#include <type_traits>
 
 #include "batch.h"
 #include "frustum.h"
@@ -34,6 +35,29 @@ struct fraction_op {
     return filter_lanes<Form, F, R>(x, conv, values);
   }
 };
+/// ortho-size and perspective-size through a box form, as their kernels (view_size.cpp): the
+/// box (−w/2, w/2, −h/2, h/2, n, f) with symmetric_view set, in the lanes where w, h ≥ 0 and
+/// halving them is exact in F (the others are left to the kernel for one case).
+template <class Form, class F>
+struct size_op {
+  static constexpr int inputs = 4, outputs = Form::entries;
+  template <class R>
+  static R doubled_in_type(R half) {
+    if constexpr (std::is_same_v<F, float>) return round_to_float_value(half) * R(2.0);
+    else return half * R(2.0);
+  }
+  template <class R>
+  static auto run(R* x, const conventions& conv, R* values, R&) {
+    const R half_w = x[0] * R(0.5), half_h = x[1] * R(0.5);
+    const auto exact_halves = (x[0] >= R(0.0)) & (x[1] >= R(0.0)) & (doubled_in_type(half_w) == x[0]) &
+                              (doubled_in_type(half_h) == x[1]);
+    R box[6] = {-half_w, half_w, -half_h, half_h, x[2], x[3]};
+    conventions symmetric = conv;
+    symmetric.symmetric_view = true;
+    return exact_halves & filter_lanes<Form, F, R>(box, symmetric, values);
+  }
+};
+
 template <class F>
 struct shadow_point_op {
   static constexpr int inputs = 11, outputs = 3;
@@ -127,9 +151,11 @@ batch_filter batch_filter_over(operation op, scalar_type type) {
     case operation::perspective_fov_infinite:
     case operation::look_at:
     case operation::target_to:
-    case operation::ortho_size:
-    case operation::perspective_size:
       return nullptr;  // no batch filter: the kernel for one case, or the generic oracle, case by case
+    case operation::ortho_size:
+      return f32 ? filter_all<size_op<ortho_form, float>, R> : filter_all<size_op<ortho_form, double>, R>;
+    case operation::perspective_size:
+      return f32 ? filter_all<size_op<frustum_form, float>, R> : filter_all<size_op<frustum_form, double>, R>;
   }
   return nullptr;
 }
