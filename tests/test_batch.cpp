@@ -138,6 +138,34 @@ TEST_CASE("batch references are the correctly rounded exact outputs, whichever p
   }
 }
 
+TEST_CASE("a shadow-point image moved to the light's side of V is misclassified in the batch as one by one", "[batch]") {
+  // Regular shadow-point cases whose float image is replaced by 2V − C (C the correctly rounded
+  // image, rounded to float): on the line through the light and V, reflected through V, so on
+  // the other side of V from C. The image filter decides these classes (no sign is near zero):
+  // the batch's image class, plane value and misclassification must be grade_case's.
+  const implementation& impl = find_builtin_implementation("eigen-intersection-f32");
+  const auto cases = generate_cases(impl.op, impl.type, 64, 17, input_class::regular, impl.conv);
+  case_batch batch = make_batch(cases);
+  batch_references refs;
+  compute_references(batch, impl.conv, refs);
+  for (std::size_t j = 0; j < 3; ++j)
+    for (std::size_t i = 0; i < batch.count; ++i)
+      batch.output_column(j)[i] =
+          static_cast<float>(2 * batch.input_column(8 + j)[i] - refs.values[j * batch.count + i]);
+  batch_grades grades, generic;
+  grade_batch(batch, impl.conv, refs, grades);
+  grade_batch(batch, impl.conv, refs, generic, batch_path::generic);
+  std::size_t misclassified = 0;
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    const case_grade g = grade_case(cases[i], impl.conv, outputs_of(batch, i).data());
+    INFO("case " << case_json_line(cases[i]));
+    require_same_grade(grades, i, g);
+    require_same_grade(generic, i, g);
+    misclassified += g.misclassified ? 1 : 0;
+  }
+  CHECK(misclassified >= cases.size() / 2);  // the comparison is about misclassified images
+}
+
 TEST_CASE("the AVX2 filter and the generic filter give the same references bit for bit", "[batch]") {
   if (!avx2_batch_available()) {
     WARN("this processor has no AVX2 and FMA: only the generic filter runs here");
