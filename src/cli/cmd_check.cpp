@@ -15,6 +15,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <numeric>
 #include <sstream>
 
 #include "command.h"
@@ -238,7 +239,7 @@ std::vector<std::size_t> costliest_first(const std::vector<const implementation*
     }
   });
   std::vector<std::size_t> order(chosen.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::iota(order.begin(), order.end(), std::size_t{0});
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return cost[a] > cost[b]; });
   return order;
 }
@@ -584,7 +585,7 @@ int run_check(const check_options& o) {
     // Long runs take the costliest implementations first; a pilot of 32 cases each costs under
     // 1% of a run of 4,096 cases per implementation.
     std::vector<std::size_t> order(chosen.size());
-    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::iota(order.begin(), order.end(), std::size_t{0});
     if (across && given.empty() && o.cases >= 4096) order = costliest_first(chosen, o, class_filter, jobs);
     for_each_slice(chosen.size(), across ? jobs : 1, 1, [&](std::size_t first, std::size_t end) {
       for (std::size_t k = first; k < end; ++k) {
