@@ -15,15 +15,17 @@
 // (180 − fovy exact by Sterbenz, π/360 a double-double constant from MPFR). So t ≤ 0.81, and
 // t is a filter number whose bound e_t covers every rounding of its computation; sin and cos
 // are 1-Lipschitz, so sin and cos at the point t̃ of the filter number, each widened by e_t,
-// enclose them at the exact t. At t̃:
-//   sin t̃ = t̃ Σ_{k=0..K} (−1)^k t̃^{2k}/(2k+1)!  + R_s,   |R_s| ≤ t̃^{2K+3}/(2K+3)!,
-//   cos t̃ =    Σ_{k=0..K'} (−1)^k t̃^{2k}/(2k)!  + R_c,   |R_c| ≤ t̃^{2K'+2}/(2K'+2)!,
-// (alternating series whose terms decrease, t̃² < 1) by Horner's rule in filter arithmetic,
+// enclose them at the exact t. At t̃ = a + r, a = j/64 the nearest multiple of 1/64 (r = t̃ − a
+// in filter arithmetic, its bound added to e_t), by the addition formulas with sin a and cos a
+// from a table (MPFR, at 320 bits) and
+//   sin r = r Σ_{k=0..K} (−1)^k r^{2k}/(2k+1)!  + R_s,   |R_s| ≤ |r|^{2K+3}/(2K+3)!,
+//   cos r =    Σ_{k=0..K'} (−1)^k r^{2k}/(2k)!  + R_c,   |R_c| ≤ |r|^{2K'+2}/(2K'+2)!,
+// (alternating series whose terms decrease, r² < 1) by Horner's rule in filter arithmetic,
 // whose operations bound their own rounding errors, with the constants 1/k! from MPFR (each
-// within its own stated bound). K = 13, K' = 14 in double-double: at t̃ = 0.81 the truncation
-// is below 2^-110 of sin t̃ and 2^-116 of cos t̃ ≥ 0.68; K = 7, K' = 8 in double (2^-52). The
-// rounding errors of Horner's rule are of a few 2^-106 (2^-53) relative: the ratio comes out
-// within about 2^-101 of cot in double-double (the test measures it on thousands of angles).
+// within its own stated bound). |r| ≤ 1/128 + 2^-60: K = K' = 5 in double-double leaves a
+// truncation below 2^-112 of the sums; K = 2, K' = 3 in double, below 2^-54. The rounding
+// errors are of a few 2^-106 (2^-53) relative: the ratio comes out within about 2^-101 of cot
+// in double-double (the test measures it on thousands of angles).
 //
 // q/√s (look-at, target-to: constructions/look_at.h). The frame W = ±(eye − target) (exact as
 // a pair: TwoSum), X = up × W, Y = W × X, the squared lengths and the translations, in filter
@@ -80,6 +82,7 @@ struct trig_constants {
   constant pi_tail;                // P2 + P3 ± e: π − P1
   double pi_head = 0;              // P1, the double nearest π (below it)
   constant degree;                 // π/360
+  constant sine[53], cosine[53];   // sin(j/64), cos(j/64), j = 0 … 52 (0.8125 > 0.81)
 
   trig_constants() {
     mpfr_t x, pi;
@@ -97,6 +100,17 @@ struct trig_constants {
     pi_tail = {p.lo, p3, p.e};
     mpfr_div_ui(x, pi, 360, MPFR_RNDN);
     degree = split_constant(x);
+    mpfr_t y;
+    mpfr_init2(y, constant_precision);
+    for (unsigned j = 0; j < 53; ++j) {
+      mpfr_set_ui(x, j, MPFR_RNDN);
+      mpfr_div_2ui(x, x, 6, MPFR_RNDN);  // exact
+      mpfr_sin(y, x, MPFR_RNDN);
+      sine[j] = split_constant(y);
+      mpfr_cos(y, x, MPFR_RNDN);
+      cosine[j] = split_constant(y);
+    }
+    mpfr_clear(y);
     mpfr_clear(x);
     mpfr_clear(pi);
     mpfr_free_cache();  // this thread's π cache; MPFR keeps one per thread
@@ -125,11 +139,13 @@ double upper_magnitude(const bounded& a) { return std::fabs(a.v); }
 bounded_pair widened(const bounded_pair& a, double e) { return bounded_pair(a.hi, a.lo, a.e + e); }
 bounded widened(const bounded& a, double e) { return bounded(a.v, a.e + e); }
 
-// Terms of the Taylor sums: sin to t^(2K+1), cos to t^(2K'), per filter number type.
+// Terms of the Taylor sums of sin r and cos r, |r| ≤ 1/128 + 2^-60: sin to r^(2K+1), cos to
+// r^(2K'). Double-double: K = K' = 5, truncation below 2^-116 of sin r and 2^-112 of cos r;
+// double: K = 2, K' = 3, below 2^-54 and 2^-70.
 template <class B>
 struct taylor_terms {
-  static constexpr int sine = std::is_same_v<B, bounded_pair> ? 13 : 7;
-  static constexpr int cosine = std::is_same_v<B, bounded_pair> ? 14 : 8;
+  static constexpr int sine = std::is_same_v<B, bounded_pair> ? 5 : 2;
+  static constexpr int cosine = std::is_same_v<B, bounded_pair> ? 5 : 3;
 };
 
 // An upper bound on t^n/n! for 0 ≤ t ≤ t_up: n + 1 roundings to nearest, each within a factor
@@ -141,7 +157,7 @@ double truncation_bound(double t_up, int n) {
   return p * (1 + 0x1p-40) + underflow_slack;
 }
 
-// Σ_{k=0..K} (−1)^k y^k c[2k + offset] by Horner's rule (y = t², offset 1: sin t / t; 0: cos t).
+// Σ_{k=0..K} (−1)^k y^k c[2k + offset] by Horner's rule (y = r², offset 1: sin r / r; 0: cos r).
 template <class B>
 B alternating_series(const B& y, int terms, int offset) {
   const auto& f = constants().inverse_factorial;
@@ -154,15 +170,34 @@ B alternating_series(const B& y, int terms, int offset) {
   return s;
 }
 
-// sin t and cos t for the filter number t, 0 < t ≤ 0.81 (see the file's comment).
+bool exact_zero(const bounded_pair& a) { return a.hi == 0 && a.e == 0; }
+bool exact_zero(const bounded& a) { return a.v == 0 && a.e == 0; }
+
+// a · b, an exact zero when either factor is one.
+template <class B>
+B product(const B& a, const B& b) {
+  return exact_zero(a) || exact_zero(b) ? B(0.0) : a * b;
+}
+
+// sin t and cos t for the filter number t, 0 < t ≤ 0.81 (see the file's comment): with
+// a = j/64 the nearest multiple of 1/64 to t̃ and r = t̃ − a (|r| ≤ 1/128 + 2^-60),
+//   sin t̃ = sin a cos r + cos a sin r,   cos t̃ = cos a cos r − sin a sin r,
+// sin a and cos a from the table, sin r and cos r by their Taylor sums.
 template <class B>
 void sine_cosine(const B& t, B& sine, B& cosine) {
+  const trig_constants& k = constants();
   const B at = point_of(t);
-  const B y = at * at;
-  const double t_up = upper_magnitude(at), e_t = bound_of(t);
+  const int j = static_cast<int>(std::nearbyint(first_of(at) * 64));  // exact scaling; 0 ≤ j ≤ 52
+  const B reduced = at - B(j / 64.0);
+  const B r = point_of(reduced);
+  const B y = r * r;
+  const double r_up = upper_magnitude(r), e_t = bound_of(t) + bound_of(reduced);
   constexpr int K = taylor_terms<B>::sine, K2 = taylor_terms<B>::cosine;
-  sine = widened(at * alternating_series(y, K, 1), truncation_bound(t_up, 2 * K + 3) + e_t);
-  cosine = widened(alternating_series(y, K2, 0), truncation_bound(t_up, 2 * K2 + 2) + e_t);
+  const B sin_r = widened(r * alternating_series(y, K, 1), truncation_bound(r_up, 2 * K + 3));
+  const B cos_r = widened(alternating_series(y, K2, 0), truncation_bound(r_up, 2 * K2 + 2));
+  const B sin_a = constant_of<B>(k.sine[j]), cos_a = constant_of<B>(k.cosine[j]);
+  sine = widened(product(sin_a, cos_r) + cos_a * sin_r, e_t);
+  cosine = widened(cos_a * cos_r - product(sin_a, sin_r), e_t);
 }
 
 }  // namespace
@@ -270,15 +305,6 @@ bool perspective_fov_kernel(const double* in, const conventions& conv, fast_refe
 
 // ===========================================================================================
 // The look-at kernels.
-
-bool exact_zero(const bounded_pair& a) { return a.hi == 0 && a.e == 0; }
-bool exact_zero(const bounded& a) { return a.v == 0 && a.e == 0; }
-
-// a · b, an exact zero when either factor is one.
-template <class B>
-B product(const B& a, const B& b) {
-  return exact_zero(a) || exact_zero(b) ? B(0.0) : a * b;
-}
 
 // a − b for two inputs: exact as a pair; in double within u |a − b| (0 exactly when a = b).
 bounded_pair difference(double a, double b, const bounded_pair&) {
