@@ -373,6 +373,70 @@ bool frame_inputs_in_range(const double* in) {
   return true;
 }
 
+// Σ t[0..n) of n exact doubles as a pair within a bound: three sweeps of TwoSum along the terms
+// (Ogita, Rump and Oishi's VecSum, each an error-free transformation: the exact sum does not
+// change) leave the recursive sum in the last term and its errors, of the order u³ Σ|t|, in
+// the others; then hi + lo = TwoSum(last, fl(Σ others)), within (n − 1) u Σ|others| (recursive
+// summation, Higham §4.2) of the exact sum. All zero: an exact zero.
+template <int n>
+bounded_pair exact_sum(double* t) {
+  for (int sweep = 0; sweep < 3; ++sweep)
+    for (int i = 1; i < n; ++i) {
+      double s, e;
+      two_sum(t[i], t[i - 1], s, e);
+      t[i] = s;
+      t[i - 1] = e;
+    }
+  double rest = t[0], mass = std::fabs(t[0]);
+  for (int i = 1; i < n - 1; ++i) {
+    rest += t[i];
+    mass += std::fabs(t[i]);
+  }
+  bounded_pair r;
+  two_sum(t[n - 1], rest, r.hi, r.lo);
+  r.e = mass * ((n - 1) * unit_roundoff * inflate);
+  return r;
+}
+
+// up × W with every component accurate to about 2^-106 of itself however much it cancels (up
+// within 2^-50 of the view direction): a_i b_j − a_j b_i as the exact sum of eight TwoProducts
+// (b = W is an exact pair).
+std::array<bounded_pair, 3> accurate_cross(const std::array<bounded_pair, 3>& a, const std::array<bounded_pair, 3>& b) {
+  std::array<bounded_pair, 3> r;
+  for (int c = 0; c < 3; ++c) {
+    const int i = (c + 1) % 3, j = (c + 2) % 3;
+    double t[8];
+    two_product(a[i].hi, b[j].hi, t[0], t[1]);
+    two_product(a[i].hi, b[j].lo, t[2], t[3]);
+    two_product(-a[j].hi, b[i].hi, t[4], t[5]);
+    two_product(-a[j].hi, b[i].lo, t[6], t[7]);
+    r[c] = exact_sum<8>(t);
+  }
+  return r;
+}
+
+// The entries of the view matrix (m, row-major, rows 0 to 2; the translations only when
+// `translations`) from the frame's W and X; false where a bound does not decide.
+template <class B>
+bool frame_entries(const std::array<B, 3>& W, const std::array<B, 3>& X, const std::array<B, 3>& at,
+                   bool translations, double* m) {
+  const std::array<B, 3> Y = cross(W, X);
+  const B ww = dot(W, W), xx = dot(X, X);
+  // |W|² and |X|² certainly positive (otherwise rows or columns are undefined, or it is not
+  // decided: the generic oracle says which).
+  B lengths[3];
+  if (!root(xx, lengths[0]) || !root(product(ww, xx), lengths[1]) || !root(ww, lengths[2])) return false;
+  const std::array<B, 3>* axes[3] = {&X, &Y, &W};
+  for (int r = 0; r < 3; ++r) {
+    const auto d = prepare(lengths[r]);
+    for (int c = 0; c < (translations ? 4 : 3); ++c) {
+      const B q = c < 3 ? (*axes[r])[c] : -dot(*axes[r], at);
+      if (!round_quotient(q, d, m[r * 4 + c])) return false;
+    }
+  }
+  return true;
+}
+
 template <class F, bool placement>
 bool look_at_kernel(const double* in, const conventions& conv, fast_reference& out) {
   refuse_grading_up_to_scale(conv, placement ? "target-to" : "look-at");
@@ -387,19 +451,13 @@ bool look_at_kernel(const double* in, const conventions& conv, fast_reference& o
     up[i] = B(in[6 + i]);
     at[i] = B(eye[i]);
   }
-  const std::array<B, 3> X = cross(up, W), Y = cross(W, X);
-  const B ww = dot(W, W), xx = dot(X, X);
-  // |W|² and |X|² certainly positive (otherwise rows or columns are undefined, or it is not
-  // decided: the generic oracle says which).
-  B lengths[3];
-  if (!root(xx, lengths[0]) || !root(product(ww, xx), lengths[1]) || !root(ww, lengths[2])) return false;
-  const std::array<B, 3>* axes[3] = {&X, &Y, &W};
   double m[16];
-  for (int r = 0; r < 3; ++r) {
-    const auto d = prepare(lengths[r]);
-    for (int c = 0; c < 4; ++c) {
-      const B q = c < 3 ? (*axes[r])[c] : -dot(*axes[r], at);
-      if (!round_quotient(q, d, m[r * 4 + c])) return false;
+  if (!frame_entries(W, cross(up, W), at, !placement, m)) {
+    // Near up ∥ w the components of X cancel: in double-double, once more with them accurate.
+    if constexpr (std::is_same_v<B, bounded_pair>) {
+      if (!frame_entries(W, accurate_cross(up, W), at, !placement, m)) return false;
+    } else {
+      return false;
     }
   }
   out = fast_reference{};
