@@ -336,7 +336,7 @@ std::vector<conventions> conventions_for(operation op) {
           all.push_back(c);
         }
       break;
-    default: break;  // normal-matrix, and the camera builders (no dedicated kernel yet)
+    default: break;  // normal-matrix; the camera builders: their own test below
   }
   return all;
 }
@@ -368,9 +368,8 @@ void require_kernel_agrees(const detail::operation_spec& spec, const test_case& 
   }
 }
 
-// The operations with dedicated kernels: those whose exact values are rational functions of the
-// inputs. The camera builders with tangents and square roots go to the generic
-// interval-then-rational oracle.
+// The operations with dedicated kernels whose exact values are rational functions of the
+// inputs (with an exact stage). The camera builders with tangents and square roots: below.
 const operation kernel_operations[] = {operation::shadow_matrix, operation::shadow_point, operation::reflection_matrix,
                                        operation::ortho,         operation::frustum,      operation::normal_matrix,
                                        operation::perspective,   operation::ortho_size,   operation::perspective_size};

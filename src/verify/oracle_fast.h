@@ -7,7 +7,9 @@
 // redoes the case with exact expansions of doubles (kernels/expansion.h), which decide every
 // sign and every rounding, ties included. A kernel returns false only for inputs outside its
 // range (f64 values beyond 2^±120, non-float f32 inputs) or an exhausted expansion; the caller
-// then uses the generic oracle (intervals, then rationals).
+// then uses the generic oracle (intervals, then rationals). The camera builders with irrational
+// values have no exact stage (an irrational value is never a tie) and return false also where
+// their bounds do not decide (kernels/camera.cpp).
 //
 // One file per operation under kernels/ (kernels/README.md); each operation's spec
 // (operations/<op>.cpp) points at its two kernels.
