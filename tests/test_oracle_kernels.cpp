@@ -591,7 +591,7 @@ TEST_CASE("the camera kernels give the rational oracle's outputs bit for bit", "
                         << tally.cases << " cases declined");
       // Declined: the degenerate classes (no field of view, a frame without an axis), the
       // range classes (inputs beyond the kernels' ranges) and a few near-degenerate frames
-      // (up within 2^-40 of the view direction cancels in up × w), not the regular ones.
+      // (up so close to the view direction that up × w cancels to a few bits in f32), not the regular ones.
       CHECK(tally.declined_regular == 0);
       CHECK(tally.declined * 16 <= tally.cases * 9);
     }

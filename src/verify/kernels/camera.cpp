@@ -399,8 +399,8 @@ bounded_pair exact_sum(double* t) {
 }
 
 // up × W with every component accurate to about 2^-106 of itself however much it cancels (up
-// within 2^-50 of the view direction): a_i b_j − a_j b_i as the exact sum of eight TwoProducts
-// (b = W is an exact pair).
+// near the view direction): a_i b_j − a_j b_i as the exact sum of eight TwoProducts (a = up is
+// exact, b = W an exact pair: their bounds are 0).
 std::array<bounded_pair, 3> accurate_cross(const std::array<bounded_pair, 3>& a, const std::array<bounded_pair, 3>& b) {
   std::array<bounded_pair, 3> r;
   for (int c = 0; c < 3; ++c) {
