@@ -150,8 +150,8 @@ struct taylor_terms {
 
 // An upper bound on t^n/n! for 0 ≤ t ≤ t_up: n + 1 roundings to nearest, each within a factor
 // (1 + 2^-53), covered by (1 + 2^-40); an underflow by underflow_slack.
-double truncation_bound(double t_up, int n) {
-  const constant& f = constants().inverse_factorial[n];
+double truncation_bound(const trig_constants& k, double t_up, int n) {
+  const constant& f = k.inverse_factorial[n];
   double p = f.hi + (std::fabs(f.lo) + f.e);
   for (int i = 0; i < n; ++i) p *= t_up;
   return p * (1 + 0x1p-40) + underflow_slack;
@@ -159,8 +159,8 @@ double truncation_bound(double t_up, int n) {
 
 // Σ_{k=0..K} (−1)^k y^k c[2k + offset] by Horner's rule (y = r², offset 1: sin r / r; 0: cos r).
 template <class B>
-B alternating_series(const B& y, int terms, int offset) {
-  const auto& f = constants().inverse_factorial;
+B alternating_series(const trig_constants& constants, const B& y, int terms, int offset) {
+  const auto& f = constants.inverse_factorial;
   B s = constant_of<B>(f[2 * terms + offset]);
   if (terms % 2) s = -s;
   for (int k = terms - 1; k >= 0; --k) {
@@ -184,8 +184,7 @@ template <class B>
 //   sin t̃ = sin a cos r + cos a sin r,   cos t̃ = cos a cos r − sin a sin r,
 // sin a and cos a from the table, sin r and cos r by their Taylor sums.
 template <class B>
-void sine_cosine(const B& t, B& sine, B& cosine) {
-  const trig_constants& k = constants();
+void sine_cosine(const trig_constants& k, const B& t, B& sine, B& cosine) {
   const B at = point_of(t);
   const int j = static_cast<int>(std::nearbyint(first_of(at) * 64));  // exact scaling; 0 ≤ j ≤ 52
   const B reduced = at - B(j / 64.0);
@@ -193,8 +192,8 @@ void sine_cosine(const B& t, B& sine, B& cosine) {
   const B y = r * r;
   const double r_up = upper_magnitude(r), e_t = bound_of(t) + bound_of(reduced);
   constexpr int K = taylor_terms<B>::sine, K2 = taylor_terms<B>::cosine;
-  const B sin_r = widened(r * alternating_series(y, K, 1), truncation_bound(r_up, 2 * K + 3));
-  const B cos_r = widened(alternating_series(y, K2, 0), truncation_bound(r_up, 2 * K2 + 2));
+  const B sin_r = widened(r * alternating_series(k, y, K, 1), truncation_bound(k, r_up, 2 * K + 3));
+  const B cos_r = widened(alternating_series(k, y, K2, 0), truncation_bound(k, r_up, 2 * K2 + 2));
   const B sin_a = constant_of<B>(k.sine[j]), cos_a = constant_of<B>(k.cosine[j]);
   sine = widened(product(sin_a, cos_r) + cos_a * sin_r, e_t);
   cosine = widened(cos_a * cos_r - product(sin_a, sin_r), e_t);
@@ -228,7 +227,7 @@ bool half_angle_ratio(double fovy, angle_unit unit, B& num, B& den) {
     t = B(complement ? 180 - fovy : fovy) * constant_of<B>(k.degree);  // 180 − fovy exact
   }
   B s, c;
-  sine_cosine(t, s, c);
+  sine_cosine(k, t, s, c);
   num = complement ? s : c;
   den = complement ? c : s;
   return true;
