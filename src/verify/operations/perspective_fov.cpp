@@ -252,6 +252,7 @@ operation_spec make() {
   s.exact_ival64 = exact<ival64, infinite>;
   s.fast_f32 = infinite ? fast_perspective_fov_infinite_f32 : fast_perspective_fov_f32;
   s.fast_f64 = infinite ? fast_perspective_fov_infinite_f64 : fast_perspective_fov_f64;
+  s.fast_kernels_read_handedness = true;
   // No derivatives over dual numbers (cot is irrational): the verdicts take the generic
   // sensitivities (conditioning.cpp). cot(fovy/2) as 1/tan: the angle's conversion (two
   // roundings in degrees), tan, the reciprocal, the quotient by aspect; A and B three: c = 2 × 5.
