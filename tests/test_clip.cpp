@@ -821,12 +821,13 @@ TEST_CASE("silhouette and union-of-pieces builders give the identical region on 
 namespace {
 
 // A soup of triangles given by their chart corners (x, y) at height z = 1 (z = 2 for a third
-// corner marked by a negative x: |x|), under the light straight above, over [0, 10]².
-scene flat_soup(const std::vector<std::array<std::array<int, 2>, 3>>& triangles) {
+// corner marked by a negative x: |x|), times `scale`, under the light straight above, over
+// [0, 10]².
+scene flat_soup(const std::vector<std::array<std::array<int, 2>, 3>>& triangles, const rational& scale = 1) {
   caster c;
   c.name = "/casters/0/mesh";
   for (const auto& t : triangles) {
-    for (const auto& q : t) c.vertices.push_back(p3(std::abs(q[0]), q[1], q[0] < 0 ? 2 : 1));
+    for (const auto& q : t) c.vertices.push_back(p3(std::abs(q[0]) * scale, q[1] * scale, q[0] < 0 ? 2 : 1));
     const std::size_t n = c.vertices.size();
     c.faces.push_back({n - 3, n - 2, n - 1});
   }
@@ -853,6 +854,11 @@ TEST_CASE("the sweep, the arrangement and the union of pieces give the identical
        flat_soup({{{{5, 5}, {8, 5}, {8, 8}}}, {{{5, 5}, {5, 8}, {2, 8}}}, {{{5, 5}, {2, 5}, {2, 2}}},
                   {{{5, 5}, {5, 2}, {8, 2}}}, {{{6, 5}, {7, 3}, {9, 4}}}, {{{0, 1}, {0, 4}, {2, 2}}},
                   {{{9, 8}, {12, 9}, {9, 10}}}, {{{1, 9}, {4, 9}, {-3, 9}}}, {{{8, 5}, {8, 8}, {9, 6}}}})},
+      // The first soup scaled by (3^25 + 1)/3^25: line coefficients beyond 64 bits.
+      {"crossings through one point, scaled",
+       flat_soup({{{{1, 5}, {9, 5}, {5, 6}}}, {{{5, 1}, {5, 9}, {4, 5}}}, {{{2, 2}, {8, 8}, {3, 2}}},
+                  {{{2, 8}, {8, 2}, {8, 3}}}, {{{3, 1}, {7, 9}, {3, 2}}}, {{{1, 3}, {9, 7}, {1, 4}}}},
+                 rational(mpz_class("847288609444"), mpz_class("847288609443")))},
       // The same triangle twice and twice reversed, and a vertical edge shared by two.
       {"repeated and reversed triangles",
        flat_soup({{{{2, 2}, {6, 3}, {3, 6}}}, {{{2, 2}, {6, 3}, {3, 6}}}, {{{2, 2}, {3, 6}, {6, 3}}},

@@ -57,8 +57,7 @@ struct fpoint {
   bool filtered = false;
 };
 
-bool bounds(const rational& q, double& lo, double& hi) {
-  const double d = q.get_d();
+bool bounds(const rational& q, double d, double& lo, double& hi) {
   if (d == 0 && sgn(q) == 0) {
     lo = hi = 0;
     return true;
@@ -74,12 +73,15 @@ bool bounds(const rational& q, double& lo, double& hi) {
   return true;
 }
 
-fpoint make_fpoint(const point2& p) {
+// `approx`: the truncated doubles of p's coordinates.
+fpoint make_fpoint(const point2& p, const std::array<double, 2>& approx) {
   fpoint f;
   f.p = &p;
-  f.filtered = bounds(p[0], f.xl, f.xh) && bounds(p[1], f.yl, f.yh);
+  f.filtered = bounds(p[0], approx[0], f.xl, f.xh) && bounds(p[1], approx[1], f.yl, f.yh);
   return f;
 }
+
+std::array<double, 2> truncated(const point2& p) { return {p[0].get_d(), p[1].get_d()}; }
 
 // Sign of (b − a) × (c − a); inside a rounding-upwards scope.
 int orientation(const fpoint& a, const fpoint& b, const fpoint& c) {
@@ -110,23 +112,24 @@ struct lex_order {
   }
 };
 
-// Numbers the distinct points of `pts` in lexicographic order: id[i] for pts[i], and the
-// representative of each number.
-void number_points(const std::vector<const point2*>& pts, std::vector<std::uint32_t>& id,
-                   std::vector<const point2*>& distinct) {
-  std::vector<std::array<double, 2>> approx(pts.size());
-  for (std::size_t i = 0; i < pts.size(); ++i) approx[i] = {(*pts[i])[0].get_d(), (*pts[i])[1].get_d()};
+// Numbers the distinct points of `pts` (truncated doubles `approx`) in lexicographic order:
+// id[i] for pts[i], and the representative of each number with its doubles.
+void number_points(const std::vector<const point2*>& pts, const std::vector<std::array<double, 2>>& approx,
+                   std::vector<std::uint32_t>& id, std::vector<const point2*>& distinct,
+                   std::vector<std::array<double, 2>>& distinct_approx) {
   std::vector<std::size_t> order(pts.size());
   std::iota(order.begin(), order.end(), std::size_t(0));
   const lex_order less{pts, approx};
   std::sort(order.begin(), order.end(), less);
   id.assign(pts.size(), 0);
   distinct.clear();
+  distinct_approx.clear();
   std::size_t last = 0;
   for (std::size_t k = 0; k < order.size(); ++k) {
     const std::size_t i = order[k];
     if (distinct.empty() || less(last, i)) {
       distinct.push_back(pts[i]);
+      distinct_approx.push_back(approx[i]);
       last = i;
     }
     id[i] = static_cast<std::uint32_t>(distinct.size() - 1);
@@ -139,19 +142,79 @@ struct segment {
   bool degenerate = false;
 };
 
-// The line through a segment as A x + B y = C with integer coefficients.
+// 128-bit integers (a GCC and Clang extension).
+__extension__ typedef __int128 i128;
+__extension__ typedef unsigned __int128 u128;
+
+// The line through a segment as A x + B y = C with integer coefficients, also held in 128-bit
+// integers when each is below 2^62 in magnitude (then Cramer's products fit).
 struct int_line {
   mpz_class a, b, c;
+  bool small = false;
+  i128 a128 = 0, b128 = 0, c128 = 0;
 };
+
+i128 to_int128(const mpz_class& z) { return mpz_get_si(z.get_mpz_t()); }  // |z| < 2^62
+
 int_line line_through(const point2& p, const point2& q) {
   const rational a = q[1] - p[1], b = p[0] - q[0], c = a * p[0] + b * p[1];
   mpz_class scale;
   mpz_lcm(scale.get_mpz_t(), a.get_den_mpz_t(), b.get_den_mpz_t());
   mpz_lcm(scale.get_mpz_t(), scale.get_mpz_t(), c.get_den_mpz_t());
-  return {a.get_num() * (scale / a.get_den()), b.get_num() * (scale / b.get_den()), c.get_num() * (scale / c.get_den())};
+  int_line l{a.get_num() * (scale / a.get_den()), b.get_num() * (scale / b.get_den()), c.get_num() * (scale / c.get_den())};
+  l.small = mpz_sizeinbase(l.a.get_mpz_t(), 2) <= 62 && mpz_sizeinbase(l.b.get_mpz_t(), 2) <= 62 &&
+            mpz_sizeinbase(l.c.get_mpz_t(), 2) <= 62;
+  if (l.small) {
+    l.a128 = to_int128(l.a);
+    l.b128 = to_int128(l.b);
+    l.c128 = to_int128(l.c);
+  }
+  return l;
 }
+
+u128 gcd128(u128 x, u128 y) {
+  const auto ctz = [](u128 v) {
+    const auto lo = static_cast<unsigned long long>(v);
+    return lo != 0 ? __builtin_ctzll(lo) : 64 + __builtin_ctzll(static_cast<unsigned long long>(v >> 64));
+  };
+  if (x == 0) return y;
+  if (y == 0) return x;
+  const int shift = std::min(ctz(x), ctz(y));
+  x >>= ctz(x);
+  do {
+    y >>= ctz(y);
+    if (x > y) std::swap(x, y);
+    y -= x;
+  } while (y != 0);
+  return x << shift;
+}
+
+void set_mpz(mpz_ptr z, u128 m, bool negative) {
+  const unsigned long long limbs[2] = {static_cast<unsigned long long>(m), static_cast<unsigned long long>(m >> 64)};
+  mpz_import(z, 2, -1, sizeof limbs[0], 0, 0, limbs);
+  if (negative) mpz_neg(z, z);
+}
+
+// num/den in lowest terms (den > 0).
+rational quotient(i128 num, i128 den) {
+  const bool negative = (num < 0) != (den < 0) && num != 0;
+  u128 n = num < 0 ? -static_cast<u128>(num) : static_cast<u128>(num);
+  u128 d = den < 0 ? -static_cast<u128>(den) : static_cast<u128>(den);
+  const u128 g = gcd128(n, d);
+  rational q;
+  set_mpz(mpq_numref(q.get_mpq_t()), n / g, negative);
+  set_mpz(mpq_denref(q.get_mpq_t()), d / g, false);
+  return q;
+}
+
 // x = (C₁B₂ − C₂B₁)/D, y = (A₁C₂ − A₂C₁)/D, D = A₁B₂ − A₂B₁ ≠ 0.
 point2 meet(const int_line& l, const int_line& m) {
+  if (l.small && m.small) {
+    // |products| < 2^124, their differences < 2^125.
+    const i128 d = l.a128 * m.b128 - m.a128 * l.b128;
+    if (d == 0) throw internal_error("crossing segments on parallel lines");
+    return {quotient(l.c128 * m.b128 - m.c128 * l.b128, d), quotient(l.a128 * m.c128 - m.a128 * l.c128, d)};
+  }
   const mpz_class d = l.a * m.b - m.a * l.b;
   if (sgn(d) == 0) throw internal_error("crossing segments on parallel lines");
   rational x(l.c * m.b - m.c * l.b, d), y(l.a * m.c - m.a * l.c, d);
@@ -162,17 +225,18 @@ point2 meet(const int_line& l, const int_line& m) {
 
 }  // namespace planar_sweep_internals
 
-std::optional<planar_map> planar_sweep(const std::vector<point2>& points, const std::vector<sweep_segment>& input,
+std::optional<planar_map> planar_sweep(const std::vector<const point2*>& pts, const std::vector<sweep_segment>& input,
                                        const std::vector<std::size_t>& point_pieces) {
   using namespace planar_sweep_internals;
   planar_map out;
 
   // The input points numbered; segments from their lower to their upper end.
-  std::vector<const point2*> pts(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i) pts[i] = &points[i];
+  std::vector<std::array<double, 2>> approx(pts.size()), first_approx;
+  for (std::size_t i = 0; i < pts.size(); ++i) approx[i] = truncated(*pts[i]);
   std::vector<std::uint32_t> vid;
   std::vector<const point2*> first;
-  number_points(pts, vid, first);
+  number_points(pts, approx, vid, first, first_approx);
+  approx = {};
   std::vector<segment> segs;
   segs.reserve(input.size() + point_pieces.size());
   for (const auto& s : input) {
@@ -207,21 +271,49 @@ std::optional<planar_map> planar_sweep(const std::vector<point2>& points, const 
 
   std::vector<fpoint> fp(first.size());
   for (std::size_t i = 0; i < first.size(); ++i) {
-    fp[i] = make_fpoint(*first[i]);
+    fp[i] = make_fpoint(*first[i], first_approx[i]);
     if (!fp[i].filtered) return std::nullopt;
   }
 
-  // Pass 1: candidate pairs by an x-sweep over boxes; splits as (segment, point reference):
-  // a reference below first.size() is an input point, above it a crossing.
+  // Pass 1: candidate pairs by an x-sweep over boxes, the open segments kept in horizontal
+  // bands about as high as a segment (a segment in every band its box meets; a pair is tested
+  // in the lowest band both meet). Splits as (segment, point reference): a reference below
+  // first.size() is an input point, above it a crossing.
   std::vector<std::pair<std::uint32_t, std::uint32_t>> splits;
   std::vector<std::array<std::uint32_t, 2>> crossing_pairs;
   {
-    const std::size_t budget = 128 * segs.size() + 10000000;
+    const std::size_t budget = 64 * segs.size() + 10000000;
     std::size_t scanned = 0;
+    std::vector<double> ylo(segs.size()), yhi(segs.size());
+    double y0 = HUGE_VAL, y1 = -HUGE_VAL, extent = 0;
+    for (std::size_t k = 0; k < segs.size(); ++k) {
+      const fpoint &p = fp[segs[k].lo], &q = fp[segs[k].hi];
+      ylo[k] = std::min(p.yl, q.yl);
+      yhi[k] = std::max(p.yh, q.yh);
+      y0 = std::min(y0, ylo[k]);
+      y1 = std::max(y1, yhi[k]);
+      extent += yhi[k] - ylo[k];
+    }
+    // Bands of height h from y0; band() is monotone under any rounding, so boxes that meet
+    // have band ranges that meet.
+    const double span = y1 - y0;
+    double h = segs.empty() ? 1 : extent / static_cast<double>(segs.size());
+    if (!(h > span / 4096)) h = span / 4096;
+    const std::size_t nbands = span > 0 && h > 0 ? std::min<std::size_t>(4096, static_cast<std::size_t>(span / h) + 1) : 1;
+    const auto band = [&](double y) -> std::size_t {
+      if (nbands == 1) return 0;
+      const double b = (y - y0) / h;
+      return b <= 0 ? 0 : std::min(nbands - 1, static_cast<std::size_t>(b));
+    };
+    std::vector<std::uint32_t> band_lo(segs.size()), band_hi(segs.size());
+    for (std::size_t k = 0; k < segs.size(); ++k) {
+      band_lo[k] = static_cast<std::uint32_t>(band(ylo[k]));
+      band_hi[k] = static_cast<std::uint32_t>(band(yhi[k]));
+    }
     std::vector<std::uint32_t> order(segs.size());
     std::iota(order.begin(), order.end(), std::uint32_t(0));
     std::sort(order.begin(), order.end(), [&](std::uint32_t x, std::uint32_t y) { return fp[segs[x].lo].xl < fp[segs[y].lo].xl; });
-    std::vector<std::uint32_t> active;
+    std::vector<std::vector<std::uint32_t>> active(nbands);
     const auto split = [&](std::uint32_t s, std::uint32_t v) {
       if (segs[s].lo < v && v < segs[s].hi) splits.emplace_back(s, v);
     };
@@ -229,52 +321,56 @@ std::optional<planar_map> planar_sweep(const std::vector<point2>& points, const 
     for (const std::uint32_t s : order) {
       const segment& S = segs[s];
       const fpoint &p = fp[S.lo], &q = fp[S.hi];
-      const double ylo = std::min(p.yl, q.yl), yhi = std::max(p.yh, q.yh);
-      std::size_t kept = 0;
-      for (std::size_t k = 0; k < active.size(); ++k) {
-        const std::uint32_t t = active[k];
-        const segment& T = segs[t];
-        const fpoint &r = fp[T.lo], &u = fp[T.hi];
-        if (u.xh < p.xl) continue;  // closed before s opens (for good)
-        active[kept++] = t;
-        if (std::max(r.yh, u.yh) < ylo || std::min(r.yl, u.yl) > yhi) continue;
-        const bool s_point = S.lo == S.hi, t_point = T.lo == T.hi;
-        if (s_point && t_point) continue;
-        if (s_point || t_point) {
-          const std::uint32_t seg = s_point ? t : s;
-          const std::uint32_t v = s_point ? S.lo : T.lo;
-          const segment& G = segs[seg];
-          if (G.lo < v && v < G.hi && orientation(fp[G.lo], fp[G.hi], fp[v]) == 0) splits.emplace_back(seg, v);
-          continue;
+      const std::size_t b0 = band_lo[s], b1 = band_hi[s];
+      for (std::size_t b = b0; b <= b1; ++b) {
+        auto& list = active[b];
+        std::size_t kept = 0;
+        for (std::size_t k = 0; k < list.size(); ++k) {
+          const std::uint32_t t = list[k];
+          const segment& T = segs[t];
+          const fpoint &r = fp[T.lo], &u = fp[T.hi];
+          if (u.xh < p.xl) continue;  // closed before s opens (for good)
+          list[kept++] = t;
+          if (std::max(b0, std::size_t(band_lo[t])) != b) continue;  // tested in a lower band
+          if (yhi[t] < ylo[s] || ylo[t] > yhi[s]) continue;
+          const bool s_point = S.lo == S.hi, t_point = T.lo == T.hi;
+          if (s_point && t_point) continue;
+          if (s_point || t_point) {
+            const std::uint32_t seg = s_point ? t : s;
+            const std::uint32_t v = s_point ? S.lo : T.lo;
+            const segment& G = segs[seg];
+            if (G.lo < v && v < G.hi && orientation(fp[G.lo], fp[G.hi], fp[v]) == 0) splits.emplace_back(seg, v);
+            continue;
+          }
+          // Orientations of t's ends about s, then of s's ends about t (shared ends are 0).
+          const int o_r = (T.lo == S.lo || T.lo == S.hi) ? 0 : orientation(p, q, r);
+          const int o_u = (T.hi == S.lo || T.hi == S.hi) ? 0 : orientation(p, q, u);
+          if (o_r == 0 && o_u == 0) {  // collinear: each end inside the other splits it
+            split(s, T.lo);
+            split(s, T.hi);
+            split(t, S.lo);
+            split(t, S.hi);
+            continue;
+          }
+          if (o_r * o_u > 0) continue;
+          const int o_p = (S.lo == T.lo || S.lo == T.hi) ? 0 : orientation(r, u, p);
+          const int o_q = (S.hi == T.lo || S.hi == T.hi) ? 0 : orientation(r, u, q);
+          if (o_p * o_q > 0) continue;
+          if (o_r != 0 && o_u != 0 && o_p != 0 && o_q != 0) {
+            crossing_pairs.push_back({s, t});
+            continue;
+          }
+          // They meet at one point, an end of one of them (on the other's line, so on it).
+          if (o_r == 0) split(s, T.lo);
+          if (o_u == 0) split(s, T.hi);
+          if (o_p == 0) split(t, S.lo);
+          if (o_q == 0) split(t, S.hi);
         }
-        // Orientations of t's ends about s, then of s's ends about t (shared ends are 0).
-        const int o_r = (T.lo == S.lo || T.lo == S.hi) ? 0 : orientation(p, q, r);
-        const int o_u = (T.hi == S.lo || T.hi == S.hi) ? 0 : orientation(p, q, u);
-        if (o_r == 0 && o_u == 0) {  // collinear: each end inside the other splits it
-          split(s, T.lo);
-          split(s, T.hi);
-          split(t, S.lo);
-          split(t, S.hi);
-          continue;
-        }
-        if (o_r * o_u > 0) continue;
-        const int o_p = (S.lo == T.lo || S.lo == T.hi) ? 0 : orientation(r, u, p);
-        const int o_q = (S.hi == T.lo || S.hi == T.hi) ? 0 : orientation(r, u, q);
-        if (o_p * o_q > 0) continue;
-        if (o_r != 0 && o_u != 0 && o_p != 0 && o_q != 0) {
-          crossing_pairs.push_back({s, t});
-          continue;
-        }
-        // They meet at one point, an end of one of them (on the other's line, so on it).
-        if (o_r == 0) split(s, T.lo);
-        if (o_u == 0) split(s, T.hi);
-        if (o_p == 0) split(t, S.lo);
-        if (o_q == 0) split(t, S.hi);
+        scanned += list.size();
+        list.resize(kept);
+        list.push_back(s);
       }
-      scanned += active.size();
-      active.resize(kept);
       if (scanned > budget) return std::nullopt;
-      active.push_back(s);
     }
   }
 
@@ -296,9 +392,14 @@ std::optional<planar_map> planar_sweep(const std::vector<point2>& points, const 
     }
   }
   std::vector<const point2*> all(first);
-  for (const auto& p : out.owned) all.push_back(&p);
+  for (const auto& p : out.owned) {
+    all.push_back(&p);
+    first_approx.push_back(truncated(p));
+  }
   std::vector<std::uint32_t> final_id;
-  number_points(all, final_id, out.vertices);
+  std::vector<std::array<double, 2>> vertex_approx;
+  number_points(all, first_approx, final_id, out.vertices, vertex_approx);
+  first_approx = {};
   for (auto& s : segs) {
     s.lo = final_id[s.lo];
     s.hi = final_id[s.hi];
@@ -345,7 +446,7 @@ std::optional<planar_map> planar_sweep(const std::vector<point2>& points, const 
   // Pass 2b: the sweep. Edges starting and ending at each vertex (edges are sorted by lo).
   const std::size_t ne = out.edges.size();
   std::vector<fpoint> vf(nv);
-  for (std::size_t i = 0; i < nv; ++i) vf[i] = make_fpoint(*out.vertices[i]);
+  for (std::size_t i = 0; i < nv; ++i) vf[i] = make_fpoint(*out.vertices[i], vertex_approx[i]);
   std::vector<std::uint32_t> start_at(nv + 1, 0), end_at(nv + 1, 0), ending(ne);
   for (const auto& e : out.edges) {
     ++start_at[e.lo + 1];

@@ -53,15 +53,15 @@ struct planar_map {
   std::vector<point2> owned;  ///< the crossing points (vertices point into it or into the input)
 };
 
-/// The planar map of `segments` (endpoints in `points`, zero-length ones ignored) and of the
-/// isolated points `points[i]` for i in `point_pieces`. Predicates on interval filters,
+/// The planar map of `segments` (endpoints *points[a], *points[b]; zero-length ones ignored)
+/// and of the isolated points *points[i] for i in `point_pieces`. Predicates on interval filters,
 /// exact rationals when a filter cannot decide; crossings by Cramer's rule on the integer
 /// coefficients of the two lines. O((n + k) log n) for n segments with k crossings when the
 /// segments are short next to the spread of the input; nullopt (nothing computed) when
 /// candidate pairs of segments exceed a budget linear in n (long overlapping segments) or a
 /// coordinate lies outside the filter's range (magnitude beyond 2^±400): the caller then
 /// uses an arrangement.
-std::optional<planar_map> planar_sweep(const std::vector<point2>& points, const std::vector<sweep_segment>& segments,
+std::optional<planar_map> planar_sweep(const std::vector<const point2*>& points, const std::vector<sweep_segment>& segments,
                                        const std::vector<std::size_t>& point_pieces);
 
 }  // namespace shadowproof::detail

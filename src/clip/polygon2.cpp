@@ -260,6 +260,9 @@ bool ccw_before(const point2& a, const point2& x, const point2& y) {
 // touches itself, an incoming edge continues with the outgoing edge first met turning
 // clockwise from it, which keeps to the piece on its left. The cycles do not depend on how
 // the input walks were chosen or where they start.
+std::vector<std::vector<point2>> link_cycles(const std::vector<const point2*>& point_of,
+                                             const std::vector<std::array<std::size_t, 2>>& numbered);
+
 // The same from the boundary's directed edges (from, to), in any order.
 std::vector<std::vector<point2>> component_cycles(const std::vector<std::array<const point2*, 2>>& boundary) {
   // Every vertex numbered once, in lexicographic order (one sort of the corners; the walk
@@ -292,10 +295,18 @@ std::vector<std::vector<point2>> component_cycles(const std::vector<std::array<c
     if (point_of.empty() || *point_of.back() != *corners[k]) point_of.push_back(corners[k]);
     id[k] = point_of.size() - 1;
   }
+  std::vector<std::array<std::size_t, 2>> numbered(boundary.size());
+  for (std::size_t e = 0; e < boundary.size(); ++e) numbered[e] = {id[2 * e], id[2 * e + 1]};
+  return link_cycles(point_of, numbered);
+}
+
+// The cycles of the boundary edges `numbered` between distinct points point_of[i].
+std::vector<std::vector<point2>> link_cycles(const std::vector<const point2*>& point_of,
+                                             const std::vector<std::array<std::size_t, 2>>& numbered) {
   std::vector<std::vector<std::size_t>> out_edges(point_of.size());  // vertex -> targets of its outgoing edges
   std::size_t edges = 0;
-  for (std::size_t e = 0; e < boundary.size(); ++e) {
-    out_edges[id[2 * e]].push_back(id[2 * e + 1]);
+  for (const auto& e : numbered) {
+    out_edges[e[0]].push_back(e[1]);
     ++edges;
   }
   // Successor of the edge u -> v.
@@ -341,6 +352,24 @@ std::vector<std::vector<point2>> component_cycles(const std::vector<std::vector<
   for (const auto& w : walks)
     for (std::size_t i = 0; i < w.size(); ++i) boundary.push_back({&w[i], &w[(i + 1) % w.size()]});
   return component_cycles(boundary);
+}
+
+// The same from edges (from, to) between vertices[from] and vertices[to], distinct points.
+std::vector<std::vector<point2>> component_cycles(const std::vector<std::array<std::uint32_t, 2>>& boundary,
+                                                  const std::vector<const point2*>& vertices) {
+  std::vector<std::uint32_t> used;
+  used.reserve(2 * boundary.size());
+  for (const auto& e : boundary) used.insert(used.end(), {e[0], e[1]});
+  std::sort(used.begin(), used.end());
+  used.erase(std::unique(used.begin(), used.end()), used.end());
+  std::vector<const point2*> point_of(used.size());
+  for (std::size_t i = 0; i < used.size(); ++i) point_of[i] = vertices[used[i]];
+  const auto local = [&](std::uint32_t v) {
+    return static_cast<std::size_t>(std::lower_bound(used.begin(), used.end(), v) - used.begin());
+  };
+  std::vector<std::array<std::size_t, 2>> numbered(boundary.size());
+  for (std::size_t e = 0; e < boundary.size(); ++e) numbered[e] = {local(boundary[e][0]), local(boundary[e][1])};
+  return link_cycles(point_of, numbered);
 }
 
 // The orientation of a boundary cycle of one connected open piece (the piece on its left, the
@@ -454,10 +483,10 @@ std::vector<region_polygon> canonical_polygons(std::vector<ring_with_holes> poly
   return sorted_polygons(std::move(grouped), chart);
 }
 
-std::vector<region_polygon> canonical_polygons(const std::vector<std::vector<std::array<const point2*, 2>>>& pieces,
-                                               const receiver_chart& chart) {
+std::vector<region_polygon> canonical_polygons(const std::vector<std::vector<std::array<std::uint32_t, 2>>>& pieces,
+                                               const std::vector<const point2*>& vertices, const receiver_chart& chart) {
   std::vector<ring_with_holes> grouped;
-  for (const auto& boundary : pieces) add_group(component_cycles(boundary), grouped);
+  for (const auto& boundary : pieces) add_group(component_cycles(boundary, vertices), grouped);
   return sorted_polygons(std::move(grouped), chart);
 }
 

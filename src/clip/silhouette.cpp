@@ -300,7 +300,7 @@ void add_chain(std::vector<xcurve>& curves, segment_lines& lines, const caster_c
 // edges: two edges next to each other on the sweep line with the region between them bound
 // the same piece.
 struct swept_boundary {
-  std::vector<std::vector<std::array<const point2*, 2>>> pieces;
+  std::vector<std::vector<std::array<std::uint32_t, 2>>> pieces;
   rational area{0};
 };
 
@@ -321,24 +321,24 @@ swept_boundary swept_region_boundary(const planar_map& m, In in) {
     const auto& E = m.edges[e];
     const bool below = in(E.below), above = in(E.above());
     if (below == above) continue;
-    const point2* from = m.vertices[above ? E.lo : E.hi];
-    const point2* to = m.vertices[above ? E.hi : E.lo];
+    const std::uint32_t from_id = above ? E.lo : E.hi, to_id = above ? E.hi : E.lo;
+    const point2 *from = m.vertices[from_id], *to = m.vertices[to_id];
     auto& k = piece_of[find(e)];
     if (k < 0) {
       k = static_cast<std::ptrdiff_t>(out.pieces.size());
       out.pieces.emplace_back();
     }
-    out.pieces[static_cast<std::size_t>(k)].push_back({from, to});
+    out.pieces[static_cast<std::size_t>(k)].push_back({from_id, to_id});
     terms.push_back((*from)[0] * (*to)[1] - (*to)[0] * (*from)[1]);
   }
   out.area = balanced_sum(std::move(terms)) / 2;
   return out;
 }
 
-std::vector<sweep_segment> chain_segments(const caster_chain& chain, std::vector<point2>& points) {
+std::vector<sweep_segment> chain_segments(const caster_chain& chain, std::vector<const point2*>& points) {
   std::vector<sweep_segment> out;
   const std::size_t base = points.size();
-  points.insert(points.end(), chain.points.begin(), chain.points.end());
+  for (const auto& p : chain.points) points.push_back(&p);
   for (const auto& s : chain.segments)
     if (s.weight != 0) out.push_back({base + s.a, base + s.b, s.weight, 0, false});
   return out;
@@ -350,7 +350,7 @@ std::vector<sweep_segment> chain_segments(const caster_chain& chain, std::vector
 bool swept_region(const clip_setup& setup, const std::vector<caster_chain>& chains,
                   const std::vector<std::array<point2, 2>>& degenerate, const clip_options& options, case_set& cases,
                   shadow_region& r) {
-  std::vector<point2> points;
+  std::vector<const point2*> points;
   std::vector<sweep_segment> segments;
   for (const auto& chain : chains) {
     auto own = chain_segments(chain, points);
@@ -358,7 +358,7 @@ bool swept_region(const clip_setup& setup, const std::vector<caster_chain>& chai
   }
   const auto add_ring = [&](const std::vector<point2>& boundary) {
     const std::size_t base = points.size();
-    points.insert(points.end(), boundary.begin(), boundary.end());
+    for (const auto& p : boundary) points.push_back(&p);
     for (std::size_t i = 0; i < boundary.size(); ++i)
       segments.push_back({base + i, base + (i + 1) % boundary.size(), 0, 1, false});
   };
@@ -367,11 +367,11 @@ bool swept_region(const clip_setup& setup, const std::vector<caster_chain>& chai
   std::vector<std::size_t> point_pieces;
   for (const auto& d : degenerate) {
     const std::size_t base = points.size();
-    points.push_back(d[0]);
+    points.push_back(&d[0]);
     if (d[0] == d[1]) {
       point_pieces.push_back(base);
     } else {
-      points.push_back(d[1]);
+      points.push_back(&d[1]);
       segments.push_back({base, base + 1, 0, 0, true});
     }
   }
@@ -380,7 +380,7 @@ bool swept_region(const clip_setup& setup, const std::vector<caster_chain>& chai
   std::vector<rational> own_areas;
   if (overlap)
     for (const auto& chain : chains) {
-      std::vector<point2> own_points;
+      std::vector<const point2*> own_points;
       const auto own = chain_segments(chain, own_points);
       const auto map = planar_sweep(own_points, own, {});
       if (!map) return false;
@@ -397,7 +397,7 @@ bool swept_region(const clip_setup& setup, const std::vector<caster_chain>& chai
     swept_boundary shadow = swept_region_boundary(m, in_shadow);
     if (overlap && balanced_sum(std::move(own_areas)) != shadow.area) cases.insert(shadow_case::shadows_overlap);
     if (options.keep_projected) {
-      for (const auto& p : canonical_polygons(shadow.pieces, r.chart)) {
+      for (const auto& p : canonical_polygons(shadow.pieces, m.vertices, r.chart)) {
         r.projected_loops.push_back(p.outer);
         for (const auto& h : p.holes) r.projected_loops.push_back(h);
       }
@@ -412,20 +412,20 @@ bool swept_region(const clip_setup& setup, const std::vector<caster_chain>& chai
   const swept_boundary result = swept_region_boundary(m, in_result);
   r.chart_area = result.area;
   r.area_squared = r.chart_area * r.chart_area * r.chart.area_scale_squared;
-  r.polygons = canonical_polygons(result.pieces, r.chart);
+  r.polygons = canonical_polygons(result.pieces, m.vertices, r.chart);
 
   // Zero-area pieces in the closed receiver and outside the closed result, and contacts of
   // the shadow's boundary with the receiver's boundary outside the closed result.
-  struct vertex_facts {
+  struct vertex_contacts {
     bool edges = false, from_caster = false, shadow_edge = false, receiver_edge = false, receiver = false, result = false;
   };
-  std::vector<vertex_facts> at(m.vertices.size());
+  std::vector<vertex_contacts> at(m.vertices.size());
   std::vector<std::array<point2, 2>> kept;
   bool contact = false;
   for (const auto& e : m.edges) {
     const windings f = e.above(), g = e.below;
     const bool shadow_edge = in_shadow(f) != in_shadow(g), receiver_edge = in_receiver(f) != in_receiver(g);
-    const bool receiver = in_receiver(f) || in_receiver(g), result = in_result(f) || in_result(g);
+    const bool receiver = in_receiver(f) || in_receiver(g), in_region = in_result(f) || in_result(g);
     for (const auto v : {e.lo, e.hi}) {
       auto& a = at[v];
       a.edges = true;
@@ -433,9 +433,9 @@ bool swept_region(const clip_setup& setup, const std::vector<caster_chain>& chai
       a.shadow_edge = a.shadow_edge || shadow_edge;
       a.receiver_edge = a.receiver_edge || receiver_edge;
       a.receiver = a.receiver || receiver;
-      a.result = a.result || result;
+      a.result = a.result || in_region;
     }
-    if (!(e.degenerate || (shadow_edge && receiver_edge)) || !(receiver && !result)) continue;
+    if (!(e.degenerate || (shadow_edge && receiver_edge)) || !(receiver && !in_region)) continue;
     kept.push_back({*m.vertices[e.lo], *m.vertices[e.hi]});
     if (shadow_edge && receiver_edge) contact = true;
   }
