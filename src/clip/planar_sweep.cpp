@@ -156,12 +156,33 @@ struct int_line {
 
 i128 to_int128(const mpz_class& z) { return mpz_get_si(z.get_mpz_t()); }  // |z| < 2^62
 
+// When the four coordinates share one denominator d < 2^31 and their numerators (the integer
+// points P = d p, Q = d q) are below 2^30: A d x + B d y = C with A = Q_y − P_y,
+// B = P_x − Q_x, C = A P_x + B P_y, in 64-bit arithmetic (|A d|, |B d|, |C| < 2^62).
+// Otherwise the rational line times the lcm of its denominators, in GMP.
 int_line line_through(const point2& p, const point2& q) {
+  const auto den = [](const rational& x) { return x.get_den_mpz_t(); };
+  const auto fits = [](const rational& x) { return mpz_sizeinbase(x.get_num_mpz_t(), 2) <= 30; };
+  int_line l;
+  if (mpz_sizeinbase(den(p[0]), 2) <= 31 && mpz_cmp(den(p[0]), den(p[1])) == 0 && mpz_cmp(den(p[0]), den(q[0])) == 0 &&
+      mpz_cmp(den(p[0]), den(q[1])) == 0 && fits(p[0]) && fits(p[1]) && fits(q[0]) && fits(q[1])) {
+    const long d = mpz_get_si(den(p[0]));
+    const long px = mpz_get_si(p[0].get_num_mpz_t()), py = mpz_get_si(p[1].get_num_mpz_t());
+    const long qx = mpz_get_si(q[0].get_num_mpz_t()), qy = mpz_get_si(q[1].get_num_mpz_t());
+    const i128 a = qy - py, b = px - qx;
+    l.small = true;
+    l.a128 = a * d;
+    l.b128 = b * d;
+    l.c128 = a * px + b * py;
+    return l;
+  }
   const rational a = q[1] - p[1], b = p[0] - q[0], c = a * p[0] + b * p[1];
   mpz_class scale;
   mpz_lcm(scale.get_mpz_t(), a.get_den_mpz_t(), b.get_den_mpz_t());
   mpz_lcm(scale.get_mpz_t(), scale.get_mpz_t(), c.get_den_mpz_t());
-  int_line l{a.get_num() * (scale / a.get_den()), b.get_num() * (scale / b.get_den()), c.get_num() * (scale / c.get_den())};
+  l.a = a.get_num() * (scale / a.get_den());
+  l.b = b.get_num() * (scale / b.get_den());
+  l.c = c.get_num() * (scale / c.get_den());
   l.small = mpz_sizeinbase(l.a.get_mpz_t(), 2) <= 62 && mpz_sizeinbase(l.b.get_mpz_t(), 2) <= 62 &&
             mpz_sizeinbase(l.c.get_mpz_t(), 2) <= 62;
   if (l.small) {
@@ -215,9 +236,18 @@ point2 meet(const int_line& l, const int_line& m) {
     if (d == 0) throw internal_error("crossing segments on parallel lines");
     return {quotient(l.c128 * m.b128 - m.c128 * l.b128, d), quotient(l.a128 * m.c128 - m.a128 * l.c128, d)};
   }
-  const mpz_class d = l.a * m.b - m.a * l.b;
+  const auto big = [](const int_line& k) {
+    if (!k.small) return std::array<mpz_class, 3>{k.a, k.b, k.c};
+    std::array<mpz_class, 3> z;
+    const i128 v[3] = {k.a128, k.b128, k.c128};
+    for (int i = 0; i < 3; ++i) set_mpz(z[i].get_mpz_t(), v[i] < 0 ? -static_cast<u128>(v[i]) : static_cast<u128>(v[i]), v[i] < 0);
+    return z;
+  };
+  const auto [la, lb, lc] = big(l);
+  const auto [ma, mb, mc] = big(m);
+  const mpz_class d = la * mb - ma * lb;
   if (sgn(d) == 0) throw internal_error("crossing segments on parallel lines");
-  rational x(l.c * m.b - m.c * l.b, d), y(l.a * m.c - m.a * l.c, d);
+  rational x(lc * mb - mc * lb, d), y(la * mc - ma * lc, d);
   x.canonicalize();
   y.canonicalize();
   return {std::move(x), std::move(y)};
