@@ -193,23 +193,6 @@ int_line line_through(const point2& p, const point2& q) {
   return l;
 }
 
-u128 gcd128(u128 x, u128 y) {
-  const auto ctz = [](u128 v) {
-    const auto lo = static_cast<unsigned long long>(v);
-    return lo != 0 ? __builtin_ctzll(lo) : 64 + __builtin_ctzll(static_cast<unsigned long long>(v >> 64));
-  };
-  if (x == 0) return y;
-  if (y == 0) return x;
-  const int shift = std::min(ctz(x), ctz(y));
-  x >>= ctz(x);
-  do {
-    y >>= ctz(y);
-    if (x > y) std::swap(x, y);
-    y -= x;
-  } while (y != 0);
-  return x << shift;
-}
-
 void set_mpz(mpz_ptr z, u128 m, bool negative) {
   const unsigned long long limbs[2] = {static_cast<unsigned long long>(m), static_cast<unsigned long long>(m >> 64)};
   mpz_import(z, 2, -1, sizeof limbs[0], 0, 0, limbs);
@@ -221,10 +204,16 @@ rational quotient(i128 num, i128 den) {
   const bool negative = (num < 0) != (den < 0) && num != 0;
   u128 n = num < 0 ? -static_cast<u128>(num) : static_cast<u128>(num);
   u128 d = den < 0 ? -static_cast<u128>(den) : static_cast<u128>(den);
-  const u128 g = gcd128(n, d);
   rational q;
-  set_mpz(mpq_numref(q.get_mpq_t()), n / g, negative);
-  set_mpz(mpq_denref(q.get_mpq_t()), d / g, false);
+  if ((n >> 64) == 0 && (d >> 64) == 0) {  // one limb each: the gcd in 64-bit arithmetic, else GMP's
+    const u128 g = std::gcd(static_cast<unsigned long long>(n), static_cast<unsigned long long>(d));
+    set_mpz(mpq_numref(q.get_mpq_t()), n / g, negative);
+    set_mpz(mpq_denref(q.get_mpq_t()), d / g, false);
+    return q;
+  }
+  set_mpz(mpq_numref(q.get_mpq_t()), n, negative);
+  set_mpz(mpq_denref(q.get_mpq_t()), d, false);
+  q.canonicalize();
   return q;
 }
 

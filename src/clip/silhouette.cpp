@@ -305,7 +305,7 @@ struct swept_boundary {
 };
 
 template <class In>
-swept_boundary swept_region_boundary(const planar_map& m, In in) {
+swept_boundary swept_region_boundary(const planar_map& m, In in, bool with_area) {
   std::vector<std::uint32_t> parent(m.edges.size());
   std::iota(parent.begin(), parent.end(), std::uint32_t(0));
   const auto find = [&](std::uint32_t x) {
@@ -329,9 +329,9 @@ swept_boundary swept_region_boundary(const planar_map& m, In in) {
       out.pieces.emplace_back();
     }
     out.pieces[static_cast<std::size_t>(k)].push_back({from_id, to_id});
-    terms.push_back((*from)[0] * (*to)[1] - (*to)[0] * (*from)[1]);
+    if (with_area) terms.push_back((*from)[0] * (*to)[1] - (*to)[0] * (*from)[1]);
   }
-  out.area = balanced_sum(std::move(terms)) / 2;
+  if (with_area) out.area = balanced_sum(std::move(terms)) / 2;
   return out;
 }
 
@@ -384,7 +384,7 @@ bool swept_region(const clip_setup& setup, const std::vector<caster_chain>& chai
       const auto own = chain_segments(chain, own_points);
       const auto map = planar_sweep(own_points, own, {});
       if (!map) return false;
-      own_areas.push_back(swept_region_boundary(*map, [](const windings& w) { return w[0] > 0; }).area);
+      own_areas.push_back(swept_region_boundary(*map, [](const windings& w) { return w[0] > 0; }, true).area);
     }
   const auto swept = planar_sweep(points, segments, point_pieces);
   if (!swept) return false;
@@ -394,7 +394,7 @@ bool swept_region(const clip_setup& setup, const std::vector<caster_chain>& chai
   const auto in_receiver = [](const windings& w) { return w[1] > 0; };
   const auto in_result = [&](const windings& w) { return in_shadow(w) && in_receiver(w); };
   if (overlap || options.keep_projected) {
-    swept_boundary shadow = swept_region_boundary(m, in_shadow);
+    swept_boundary shadow = swept_region_boundary(m, in_shadow, overlap);
     if (overlap && balanced_sum(std::move(own_areas)) != shadow.area) cases.insert(shadow_case::shadows_overlap);
     if (options.keep_projected) {
       for (const auto& p : canonical_polygons(shadow.pieces, m.vertices, r.chart)) {
@@ -409,10 +409,17 @@ bool swept_region(const clip_setup& setup, const std::vector<caster_chain>& chai
   for (const auto& e : m.edges)
     for (const windings& w : {e.below, e.above()}) outside = outside || (in_shadow(w) && !in_receiver(w));
   if (outside) cases.insert(shadow_case::shadow_outside_receiver);
-  const swept_boundary result = swept_region_boundary(m, in_result);
-  r.chart_area = result.area;
-  r.area_squared = r.chart_area * r.chart_area * r.chart.area_scale_squared;
+  const swept_boundary result = swept_region_boundary(m, in_result, false);
   r.polygons = canonical_polygons(result.pieces, m.vertices, r.chart);
+  // The area from the canonical rings: consecutive shoelace terms share a vertex, so partial
+  // sums along a ring keep smaller denominators than over the edges in any order.
+  std::vector<rational> ring_areas;
+  for (const auto& p : r.polygons) {
+    ring_areas.push_back(signed_area(p.outer));
+    for (const auto& h : p.holes) ring_areas.push_back(signed_area(h));
+  }
+  r.chart_area = balanced_sum(std::move(ring_areas));
+  r.area_squared = r.chart_area * r.chart_area * r.chart.area_scale_squared;
 
   // Zero-area pieces in the closed receiver and outside the closed result, and contacts of
   // the shadow's boundary with the receiver's boundary outside the closed result.
