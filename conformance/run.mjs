@@ -147,20 +147,27 @@ for (const jobs of groups.values()) {
   }
 }
 
-// C++ libraries built into shadowproof: the engines, not shadowproof's own seed routines.
+// C++ libraries built into shadowproof: the engines, not shadowproof's own seed routines. One
+// class at a time, a third of the cases each, as `shadowproof cases` draws them; one `check` per
+// class grades every engine (each implementation's cases depend on it alone, not on the others
+// graded with it).
 const engines = /^(glm|eigen|irrlicht|ogre|qt|osg)-/;
-for (const name of run(shadowproof, ["check", "--list"]).trim().split("\n").filter((n) => engines.test(n))) {
-  // One class at a time, a third of the cases each, as `shadowproof cases` draws them.
-  const byClass = {};
-  let first = null;
-  for (const cls of CLASSES) {
-    const doc = JSON.parse(run(shadowproof, ["check", "--impl", name, "--class", cls, "--cases",
-                                             String(Math.max(1, Math.round(cases / CLASSES.length))), "--seed", seed,
-                                             "--json"], { okStatus: [0, 1] }));
-    const r = doc.results[0];
-    byClass[cls] = r.by_class[cls];
-    first ??= r;
+const engineNames = run(shadowproof, ["check", "--list"]).trim().split("\n").filter((n) => engines.test(n));
+const engineRuns = new Map(engineNames.map((name) => [name, { byClass: {}, first: null }]));
+for (const cls of CLASSES) {
+  const doc = JSON.parse(run(shadowproof, ["check", "--impl", engineNames.join(","), "--class", cls, "--cases",
+                                           String(Math.max(1, Math.round(cases / CLASSES.length))), "--seed", seed,
+                                           "--json"], { okStatus: [0, 1] }));
+  if (doc.results.length !== engineNames.length)
+    throw new Error(`check graded ${doc.results.length} engines, not ${engineNames.length}`);
+  for (const r of doc.results) {
+    const e = engineRuns.get(r.impl);
+    e.byClass[cls] = r.by_class[cls];
+    e.first ??= r;
   }
+}
+for (const name of engineNames) {
+  const { byClass, first } = engineRuns.get(name);
   const origin = first.origin;
   const conv = first.conventions;
   const conventions = [

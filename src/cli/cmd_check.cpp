@@ -514,6 +514,40 @@ html_page check_page(const check_options& o, const check_report& report, const s
   return page;
 }
 
+// The implementations `--impl` names: 'all', or names separated by commas, each known. They are
+// graded in the built-in list's order, each once, whatever order the names come in: a report
+// depends on the set chosen only.
+std::vector<const implementation*> chosen_implementations(const std::string& names,
+                                                          const std::optional<operation>& op_filter,
+                                                          const std::string& op_name) {
+  const auto& all = builtin_implementations();
+  std::vector<std::string> wanted;
+  if (names != "all") {
+    std::size_t start = 0;
+    while (true) {
+      const std::size_t comma = names.find(',', start);
+      wanted.push_back(names.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+      if (comma == std::string::npos) break;
+      start = comma + 1;
+    }
+    for (const std::string& name : wanted) {
+      const bool known = std::any_of(all.begin(), all.end(), [&](const implementation& i) { return i.name == name; });
+      if (!known) throw error(errc::verify_unknown_impl, "no implementation named '" + name + "' (see --list)");
+    }
+  }
+  const auto is_wanted = [&](const implementation& impl) {
+    return names == "all" || std::find(wanted.begin(), wanted.end(), impl.name) != wanted.end();
+  };
+  std::vector<const implementation*> chosen;
+  for (const auto& impl : all)
+    if (is_wanted(impl) && (!op_filter || impl.op == *op_filter)) chosen.push_back(&impl);
+  if (chosen.empty())
+    throw error(errc::verify_unknown_impl, (wanted.size() == 1 ? "implementation '" + names + "' does not"
+                                                               : "none of the implementations '" + names + "'") +
+                                           " compute --op " + op_name);
+  return chosen;
+}
+
 int run_check(const check_options& o) {
   const auto& all = builtin_implementations();
   if (o.list) {
@@ -536,15 +570,7 @@ int run_check(const check_options& o) {
                   "unknown --class '" + o.cls + "'; expected regular, near-degenerate, degenerate or range");
   }
   (void)parse_fail_on(o.fail_on);  // a bad --fail-on fails before any grading
-  std::vector<const implementation*> chosen;
-  for (const auto& impl : all)
-    if ((o.impl == "all" || impl.name == o.impl) && (!op_filter || impl.op == *op_filter)) chosen.push_back(&impl);
-  if (chosen.empty()) {
-    bool known = o.impl == "all";
-    for (const auto& impl : all) known = known || impl.name == o.impl;
-    if (!known) throw error(errc::verify_unknown_impl, "no implementation named '" + o.impl + "' (see --list)");
-    throw error(errc::verify_unknown_impl, "implementation '" + o.impl + "' does not compute --op " + o.op);
-  }
+  std::vector<const implementation*> chosen = chosen_implementations(o.impl, op_filter, o.op);
 
   std::vector<test_case> given;
   if (!o.input.empty()) {
@@ -639,7 +665,7 @@ const command_registration check_registration{command{
     "check", "grade built-in float implementations (seed formulas, GLM, Eigen, Irrlicht, Ogre) against the exact oracle",
     [](CLI::App& app, const global_options& globals) {
       auto o = std::make_shared<check_options>();
-      app.add_option("--impl", o->impl, "implementation name, or 'all' (see --list)");
+      app.add_option("--impl", o->impl, "implementation names separated by commas, or 'all' (see --list)");
       app.add_option("--op", o->op, "only this operation: " + operation_names(", "));
       app.add_option("--cases", o->cases, "cases per implementation (cycling regular, near-degenerate, "
                                           "degenerate, range)")->capture_default_str();

@@ -66,7 +66,13 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::cerr << "shadowproof: " << e.what() << "\n(run 'shadowproof --help' for usage)\n";
+    // Points at the help of the (sub)command the words got to, not the program's list of them.
+    std::string where = "shadowproof";
+    for (const CLI::App* at = &app; !at->get_subcommands().empty();) {
+      at = at->get_subcommands().front();
+      where += " " + at->get_name();
+    }
+    std::cerr << "shadowproof: " << e.what() << "\n(run '" << where << " --help' for usage)\n";
     return 2;
   } catch (const error& e) {
     std::cerr << "shadowproof: " << e.what() << '\n';

@@ -180,6 +180,17 @@ void print_case(std::ostream& out, const std::string& title, const case_grade& g
   out << std::string(indent, ' ') << "exact answer:\n" << wrap_command(reproducer_command(c, conv), 6, style.width) << '\n';
 }
 
+// A label cut to `room` columns keeps its start and its end, where names differ by type or class
+// ("correctly-rounded-perspect..nfinite-f32" and "..nfinite-f64"): cut at the end only, two rows
+// could read the same.
+std::string shortened_label(const std::string& text, std::size_t room) {
+  if (columns(text) <= room) return text;
+  if (room < 8) return text.substr(0, room);
+  const std::size_t kept = room - 2;
+  const std::size_t tail = std::min<std::size_t>(12, kept / 3);
+  return text.substr(0, kept - tail) + ".." + text.substr(text.size() - tail);
+}
+
 }  // namespace
 
 std::string ulps_text(std::uint64_t ulps) {
@@ -261,8 +272,7 @@ void print_verdict_table(std::ostream& out, const std::vector<verdict_row>& rows
   }
   out << head[0] << '\n' << head[1] << '\n';
   for (const auto& r : rows) {
-    std::string l = r.label;
-    if (columns(l) > label) l = l.substr(0, label);
+    const std::string l = shortened_label(r.label, label);
     out << pad_right(l, label) << ' ' << pad_right(std::string(to_string(r.summary.worst_verdict)), verdict_width);
     for (std::size_t v = 0; v < all_verdicts().size(); ++v) {
       const std::size_t n = r.summary.verdicts[v];

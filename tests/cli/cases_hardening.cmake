@@ -10,4 +10,4 @@ endforeach()
 add_test(NAME "hardening: the same seed gives byte-identical output"
   COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:shadowproof_cli> -DWORK=${CMAKE_CURRENT_BINARY_DIR}/same_seed
           -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/same_seed.cmake)
-set_tests_properties("hardening: the same seed gives byte-identical output" PROPERTIES LABELS "hardening;cli" TIMEOUT 120)
+set_tests_properties("hardening: the same seed gives byte-identical output" PROPERTIES LABELS "hardening;cli" TIMEOUT 120 COST 25)

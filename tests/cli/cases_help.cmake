@@ -36,3 +36,9 @@ add_custom_target(update_cli_reference
   COMMAND $<TARGET_FILE:shadowproof_cli> help --man > ${PROJECT_SOURCE_DIR}/src/cli/shadowproof.1
   COMMAND $<TARGET_FILE:shadowproof_cli> help --bash-completion > ${PROJECT_SOURCE_DIR}/src/cli/shadowproof.bash
   DEPENDS shadowproof_cli VERBATIM)
+shadowproof_cli_case(NAME "a malformed option points at its subcommand's help"
+  ARGS check --cases x EXPECT_CODE 2 STDOUT_EMPTY
+  STDERR_REGEX "^shadowproof: Could not convert: --cases = x\n\\(run 'shadowproof check --help' for usage\\)\n$")
+shadowproof_cli_case(NAME "a missing option of a nested subcommand points at that subcommand's help"
+  ARGS explain shadow EXPECT_CODE 2 STDOUT_EMPTY
+  STDERR_REGEX "\\(run 'shadowproof explain shadow --help' for usage\\)\n$")

@@ -4,7 +4,7 @@ if(TARGET shadowproof_impls)
     COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:shadowproof_cli> -DWORK=${CMAKE_CURRENT_BINARY_DIR}/same_jobs
             -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/same_jobs.cmake)
   set_tests_properties("jobs: check, grade and fuzz print the same bytes with --jobs 1, 2 and 3"
-    PROPERTIES LABELS "hardening;cli" TIMEOUT 300)
+    PROPERTIES LABELS "hardening;cli" TIMEOUT 300 COST 30)
 endif()
 shadowproof_cli_case(NAME "check --jobs 0 is refused"
   ARGS check --impl all --jobs 0 EXPECT_CODE 2 STDOUT_EMPTY STDERR_REGEX "--jobs: Value 0 not in range 1 to 256")

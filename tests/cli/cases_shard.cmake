@@ -4,7 +4,7 @@ add_test(NAME "cli: shards of check, grade and fuzz merge to the unsharded repor
   COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:shadowproof_cli> -DWORK=${CMAKE_CURRENT_BINARY_DIR}/shard_merge
           -DDATA=${CMAKE_CURRENT_SOURCE_DIR}/data/verify -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/shard_merge.cmake)
 set_tests_properties("cli: shards of check, grade and fuzz merge to the unsharded report byte for byte"
-  PROPERTIES LABELS cli TIMEOUT 600)
+  PROPERTIES LABELS cli TIMEOUT 600 COST 40)
 
 foreach(spec "3/3" "1/0" "a/4" "2" "1/2/3" "0/1048577" " 1/2")
   shadowproof_cli_case(NAME "check refuses --shard '${spec}'"

@@ -54,11 +54,21 @@ if(TARGET shadowproof_impls)
   add_test(NAME "cli: every reproducer check prints runs"
     COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:shadowproof_cli> "-DARGS=check\;--impl\;all\;--cases\;16\;--wide"
     -DMIN=40 -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/run_reproducers.cmake)
-  set_tests_properties("cli: every reproducer check prints runs" PROPERTIES LABELS cli)
+  set_tests_properties("cli: every reproducer check prints runs" PROPERTIES LABELS cli COST 30)
 endif()
 shadowproof_cli_case(NAME "check rejects an unknown implementation"
   ARGS check --impl no-such-impl EXPECT_CODE 2 STDOUT_EMPTY
   STDERR_REGEX "\\[shadowproof.verify.unknown_impl\\] no implementation named 'no-such-impl' \\(see --list\\)")
+shadowproof_cli_case(NAME "check rejects an unknown name in a list of implementations"
+  ARGS check --impl glm-ortho-f32,no-such-impl EXPECT_CODE 2 STDOUT_EMPTY
+  STDERR_REGEX "\\[shadowproof.verify.unknown_impl\\] no implementation named 'no-such-impl' \\(see --list\\)")
+add_test(NAME "cli: check --impl A,B grades each as alone, in the built-in order, once"
+  COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:shadowproof_cli> -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/check_impl_list.cmake)
+set_tests_properties("cli: check --impl A,B grades each as alone, in the built-in order, once" PROPERTIES LABELS cli)
+shadowproof_cli_case(NAME "check's table cuts a long name in the middle, so the f32 and f64 rows differ"
+  ARGS check --impl correctly-rounded-perspective-fov-infinite-f32,correctly-rounded-perspective-fov-infinite-f64 --cases 2
+  EXPECT_CODE 0
+  STDOUT_REGEX "\ncorrectly-rounded-perspecti\\.\\.infinite-f32 exact +2 [^\n]*\ncorrectly-rounded-perspecti\\.\\.infinite-f64 exact +2 ")
 shadowproof_cli_case(NAME "check rejects an unknown operation"
   ARGS check --impl all --op twist EXPECT_CODE 2 STDOUT_EMPTY
   STDERR_REGEX "\\[shadowproof.verify.unknown_op\\] unknown --op 'twist'")
