@@ -836,7 +836,7 @@ scene flat_soup(const std::vector<std::array<std::array<int, 2>, 3>>& triangles,
 
 }  // namespace
 
-TEST_CASE("the sweep, the arrangement and the union of pieces give the identical region on degenerate soups") {
+TEST_CASE("the sweep and the arrangement both give the union of pieces' region on degenerate soups") {
   const std::vector<std::pair<std::string, scene>> soups = {
       // Eight thin triangles whose long edges all cross at (5, 5), both orientations.
       {"crossings through one point",
