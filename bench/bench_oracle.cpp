@@ -3,7 +3,8 @@
 // oracle over a batch (compute_references + grade_batch, generic and AVX2 filters), and the
 // all-rational oracle; their ratios, and how many cases the filtered oracle left to rationals.
 //
-//   bench/bench_oracle [--table=ROUNDS]   the table (the default, 3 rounds)
+//   bench/bench_oracle [--table=ROUNDS] [--op=NAME,...]   the table (the default, 3 rounds),
+//                                         of every operation or of those named
 //   bench/bench_oracle --threads=ROUNDS   the batch grader and run_and_grade_in_parallel on 1
 //                                         and 2 threads, wall-clock
 //   bench/bench_oracle --verdicts=ROUNDS  grade_case with verdicts vs values only: what the
@@ -235,7 +236,20 @@ timings measure(workload& w, std::size_t rounds) {
   return t;
 }
 
-int table(std::size_t rounds) {
+// Whether `op` is one of the comma-separated names in `only` (every operation when empty).
+bool selected(operation op, const std::string& only) {
+  if (only.empty()) return true;
+  const std::string name(to_string(op));
+  std::size_t start = 0;
+  while (start <= only.size()) {
+    const std::size_t end = std::min(only.find(',', start), only.size());
+    if (only.compare(start, end - start, name) == 0 && end - start == name.size()) return true;
+    start = end + 1;
+  }
+  return false;
+}
+
+int table(std::size_t rounds, const std::string& ops) {
   std::printf("load average before: %s; AVX2 filter: %s; %zu rounds, best kept\n\n", load_average().c_str(),
               avx2_batch_available() ? "yes" : "no (not measured)", rounds);
   std::printf("| operation / type / class | implementation | float code | filtered, one case | filtered, batch "
@@ -244,6 +258,7 @@ int table(std::size_t rounds) {
   for (operation op : all_operations())
     for (scalar_type type : {scalar_type::f32, scalar_type::f64})
       for (input_class cls : {input_class::regular, input_class::near_degenerate}) {
+        if (!selected(op, ops)) continue;
         workload w = make_workload(op, type, cls, 4096);
         const timings t = measure(w, rounds);
         const double batch = std::min(t.batch_generic, t.batch_avx2);
@@ -431,19 +446,20 @@ void register_benchmarks() {
 int main(int argc, char** argv) {
   std::size_t agree_count = 0, table_rounds = 3, thread_rounds = 0, verdict_rounds = 0;
   bool gbench = false;
-  std::string only;
+  std::string only, ops;
   for (int i = 1; i < argc; ++i) {
     if (std::strncmp(argv[i], "--agree=", 8) == 0) agree_count = std::stoul(argv[i] + 8);
     else if (std::strncmp(argv[i], "--table=", 8) == 0) table_rounds = std::stoul(argv[i] + 8);
     else if (std::strncmp(argv[i], "--threads=", 10) == 0) thread_rounds = std::stoul(argv[i] + 10);
     else if (std::strncmp(argv[i], "--verdicts=", 11) == 0) verdict_rounds = std::stoul(argv[i] + 11);
     else if (std::strncmp(argv[i], "--impl=", 7) == 0) only = argv[i] + 7;
+    else if (std::strncmp(argv[i], "--op=", 5) == 0) ops = argv[i] + 5;
     else if (std::strcmp(argv[i], "--gbench") == 0) gbench = true;
   }
   if (agree_count) return agree(agree_count, only);
   if (thread_rounds) return threads(thread_rounds);
   if (verdict_rounds) return verdicts_cost(verdict_rounds);
-  if (!gbench) return table(table_rounds);
+  if (!gbench) return table(table_rounds, ops);
   register_benchmarks();
   benchmark::Initialize(&argc, argv);
   benchmark::RunSpecifiedBenchmarks();

@@ -11,9 +11,11 @@
 #include <random>
 #include <vector>
 
+#include "../src/verify/kernels/cotangent.h"
 #include "../src/verify/kernels/error_free.h"
 #include "../src/verify/kernels/exact_rounding.h"
 #include "../src/verify/operation_table.h"
+#include "shadowproof/constructions/irrational.h"
 #include "shadowproof/core/number.h"
 #include "shadowproof/core/ulp.h"
 #include "shadowproof/verify/cases.h"
@@ -334,7 +336,7 @@ std::vector<conventions> conventions_for(operation op) {
           all.push_back(c);
         }
       break;
-    default: break;  // normal-matrix, and the camera builders (no dedicated kernel yet)
+    default: break;  // normal-matrix; the camera builders: their own test below
   }
   return all;
 }
@@ -366,9 +368,8 @@ void require_kernel_agrees(const detail::operation_spec& spec, const test_case& 
   }
 }
 
-// The operations with dedicated kernels: those whose exact values are rational functions of the
-// inputs. The camera builders with tangents and square roots go to the generic
-// interval-then-rational oracle.
+// The operations with dedicated kernels whose exact values are rational functions of the
+// inputs (with an exact stage). The camera builders with tangents and square roots: below.
 const operation kernel_operations[] = {operation::shadow_matrix, operation::shadow_point, operation::reflection_matrix,
                                        operation::ortho,         operation::frustum,      operation::normal_matrix,
                                        operation::perspective,   operation::ortho_size,   operation::perspective_size};
@@ -479,4 +480,120 @@ TEST_CASE("a shadow-matrix diagonal exactly halfway between two values rounds to
   const double f64_inputs[8] = {0, 1, 1, 0, 0, 0x1p53, 1, 0};
   REQUIRE(spec.fast_f64(f64_inputs, conventions{}, r));
   CHECK(r.value[0] == 0x1p53);
+}
+
+// ----------------------------------------------------------------------------------------------
+// The camera builders with irrational values: cot(fovy/2) in double-double, and their kernels.
+
+namespace {
+
+// Angles across the half turn: uniform, tiny, about the switch between the two evaluations
+// (fovy = 1.6 rad, 90°), about the quarter turn and just below the half turn.
+std::vector<double> half_turn_angles(angle_unit unit, std::size_t uniform, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  const double pi_below = 0x1.921fb54442d18p+1, full = unit == angle_unit::degrees ? 180.0 : pi_below;
+  std::vector<double> a;
+  for (std::size_t i = 0; i < uniform; ++i) a.push_back(full * (static_cast<double>(rng() >> 11) * 0x1p-53));
+  for (int k = 1; k <= 390; k += 7) a.push_back(std::ldexp(full, -k));
+  a.push_back(unit == angle_unit::degrees ? 0x1p-390 : 0x1p-400);  // the smallest covered
+  for (double centre : {unit == angle_unit::degrees ? 90.0 : 1.6, full / 2, full}) {
+    double up = centre, down = centre;
+    for (int i = 0; i < 40; ++i) {
+      up = std::nextafter(up, 1e300);
+      down = std::nextafter(down, 0.0);
+      a.push_back(down);
+      if (up < full || (unit == angle_unit::radians && up <= pi_below)) a.push_back(up);
+    }
+    a.push_back(centre);
+  }
+  std::vector<double> inside;
+  for (double x : a)
+    if (x > 0 && (unit == angle_unit::degrees ? x < 180 : x <= pi_below)) inside.push_back(x);
+  return inside;
+}
+
+}  // namespace
+
+TEST_CASE("cot(fovy/2) in double-double encloses MPFR's value tightly", "[kernels][cotangent]") {
+  // MPFR's 256-bit enclosure [lo, hi] of cot(fovy/2) (constructions/irrational.h), which holds
+  // the exact value, must lie inside hi' + lo' ± e of the double-double evaluation, whose bound
+  // must be at most 2^-100 of the value. For tiny angles the double-double bound is narrower
+  // than 256 bits (cot x ≈ 1/x is evaluated to about 2^-106 relative and x is exact): there
+  // the enclosure at 1024 bits.
+  std::size_t checked = 0;
+  for (angle_unit unit : {angle_unit::radians, angle_unit::degrees})
+    for (double fovy : half_turn_angles(unit, 1500, unit == angle_unit::degrees ? 7 : 8)) {
+      INFO("fovy " << hex_string(fovy) << (unit == angle_unit::degrees ? " degrees" : " radians"));
+      detail::cot_pair c;
+      REQUIRE(detail::cot_half_angle_pair(fovy, unit, c));
+      const rational mid = exact_value(c.hi) + exact_value(c.lo), e = exact_value(c.e);
+      enclosure mp = cot_half_angle(fovy, unit, 256);
+      if (mp.hi - mp.lo >= e) mp = cot_half_angle(fovy, unit, 1024);
+      REQUIRE(mp.hi - mp.lo < e);
+      CHECK(mid - e <= mp.lo);
+      CHECK(mp.hi <= mid + e);
+      CHECK(c.e <= std::fabs(c.hi) * 0x1p-100);
+      ++checked;
+    }
+  CHECK(checked > 3000);
+  // Outside the half turn, or below the evaluation's range: declined (MPFR or nothing decides).
+  detail::cot_pair c;
+  for (double fovy : {0.0, -1.0, 0x1.921fb54442d19p+1, 4.0, 0x1p-401, std::nan("")})
+    CHECK_FALSE(detail::cot_half_angle_pair(fovy, angle_unit::radians, c));
+  for (double fovy : {0.0, 180.0, 200.0, 0x1p-391})
+    CHECK_FALSE(detail::cot_half_angle_pair(fovy, angle_unit::degrees, c));
+}
+
+TEST_CASE("the field of view's range is decided as with MPFR's enclosure of pi", "[kernels][cotangent]") {
+  for (double fovy : {0x1.921fb54442d18p+1, 0x1.921fb54442d19p+1, 0x1.921fb54442d17p+1, 3.0, 1e-300, 0.0, -0.0,
+                      -1.0, 180.0, 179.99999999999997, 1e300})
+    for (angle_unit unit : {angle_unit::radians, angle_unit::degrees}) {
+      INFO("fovy " << hex_string(fovy) << " " << to_string(unit));
+      CHECK(detail::field_of_view_inside_half_turn(fovy, unit) == field_of_view_in_range(fovy, unit));
+    }
+}
+
+TEST_CASE("the camera kernels give the rational oracle's outputs bit for bit", "[kernels][oracle]") {
+  // perspective-fov(-infinite) in radians and degrees and every depth convention, look-at and
+  // target-to in both handednesses (their kernels read it), every class; few cases per class,
+  // the rational oracle of these is slow. A kernel may decline (its bound straddles a
+  // rounding boundary, a degenerate frame): rarely on regular inputs.
+  for (operation op : {operation::perspective_fov, operation::perspective_fov_infinite, operation::look_at,
+                       operation::target_to}) {
+    const detail::operation_spec& spec = detail::spec_of(op);
+    const bool frame = op == operation::look_at || op == operation::target_to;
+    std::vector<conventions> all;
+    if (frame) {
+      all.push_back(conventions{});
+      all.back().hand = handedness::left;
+      all.push_back(conventions{});
+    } else {
+      for (depth_convention d : {depth_convention::gl, depth_convention::d3d, depth_convention::reverse_z})
+        for (angle_unit unit : {angle_unit::radians, angle_unit::degrees}) {
+          conventions c;
+          c.depth = d;
+          c.angle = unit;
+          all.push_back(c);
+        }
+      all.back().hand = handedness::left;
+    }
+    for (scalar_type type : {scalar_type::f32, scalar_type::f64}) {
+      kernel_tally tally;
+      for (const conventions& conv : all)
+        for (input_class cls : all_input_classes()) {
+          const auto cases = generate_cases(op, type, frame ? 20 : 16, 77 + static_cast<std::uint64_t>(op), cls, conv);
+          for (const auto& c : cases) {
+            if (type == scalar_type::f32) require_kernel_agrees<float>(spec, c, conv, tally);
+            else require_kernel_agrees<double>(spec, c, conv, tally);
+          }
+        }
+      INFO("operation " << to_string(op) << ", type " << to_string(type) << ": " << tally.declined << " of "
+                        << tally.cases << " cases declined");
+      // Declined: the degenerate classes (no field of view, a frame without an axis), the
+      // range classes (inputs beyond the kernels' ranges) and a few near-degenerate frames
+      // (up so close to the view direction that up × w cancels to a few bits in f32), not the regular ones.
+      CHECK(tally.declined_regular == 0);
+      CHECK(tally.declined * 16 <= tally.cases * 9);
+    }
+  }
 }

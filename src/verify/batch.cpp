@@ -414,7 +414,8 @@ void compute_references_range(const case_batch& batch, const conventions& conv, 
   const bool right_handed = conv.hand == handedness::right;
   if (right_handed && filter) filter(in_columns, end - first, conv, {out_columns, decided, point ? out.point_class.data() + first : nullptr});
   else std::fill(decided, decided + (end - first), std::uint8_t{0});
-  const fast_kernel kernel = right_handed ? (f32 ? spec.fast_f32 : spec.fast_f64) : nullptr;
+  const fast_kernel kernel =
+      right_handed || spec.fast_kernels_read_handedness ? (f32 ? spec.fast_f32 : spec.fast_f64) : nullptr;
   double in[16];
   fast_reference r;
   std::uint64_t intervals = 0, rationals = 0;

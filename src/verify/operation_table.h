@@ -75,6 +75,9 @@ struct operation_spec {
   /// correctly rounded, or false when they cannot decide. Null when the operation has none.
   bool (*fast_f32)(const double* inputs, const conventions& conv, fast_reference& out) = nullptr;
   bool (*fast_f64)(const double* inputs, const conventions& conv, fast_reference& out) = nullptr;
+  /// The kernels compute the matrix of either handedness themselves (the camera builders with
+  /// irrational values); otherwise a left-handed case goes to the generic oracle.
+  bool fast_kernels_read_handedness = false;
   /// Grades what the outputs mean beyond their values (shadow-point: the class of the float
   /// image); g.exact_class is set already, `exact_defined` says whether the exact outputs exist.
   /// Null when there is nothing more to grade.

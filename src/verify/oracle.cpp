@@ -335,9 +335,12 @@ template <class F>
 bool grade_fast(const test_case& c, const conventions& conv, const double* got, case_grade& out, grade_depth depth) {
   const detail::operation_spec& spec = detail::spec_of(c.op);
   const auto kernel = std::is_same_v<F, float> ? spec.fast_f32 : spec.fast_f64;
-  // The kernels compute right-handed matrices; a left-handed convention (column 2 negated) goes
-  // to the generic oracle, whose exact templates apply it.
-  if (!kernel || detail::graded_up_to_scale(spec, conv) || conv.hand == handedness::left) return false;
+  // The kernels compute right-handed matrices (but those that read the handedness); a
+  // left-handed convention (column 2 negated) goes to the generic oracle, whose exact templates
+  // apply it.
+  if (!kernel || detail::graded_up_to_scale(spec, conv) ||
+      (conv.hand == handedness::left && !spec.fast_kernels_read_handedness))
+    return false;
   detail::fast_reference fast;
   if (!kernel(c.inputs.data(), conv, fast)) return false;
   const std::size_t k = spec.signature.matrix_size;

@@ -7,7 +7,9 @@
 // redoes the case with exact expansions of doubles (kernels/expansion.h), which decide every
 // sign and every rounding, ties included. A kernel returns false only for inputs outside its
 // range (f64 values beyond 2^±120, non-float f32 inputs) or an exhausted expansion; the caller
-// then uses the generic oracle (intervals, then rationals).
+// then uses the generic oracle (intervals, then rationals). The camera builders with irrational
+// values have no exact stage (an irrational value is never a tie) and return false also where
+// their bounds do not decide (kernels/camera.cpp).
 //
 // One file per operation under kernels/ (kernels/README.md); each operation's spec
 // (operations/<op>.cpp) points at its two kernels.
@@ -57,6 +59,16 @@ bool fast_ortho_size_f32(const double* inputs, const conventions& conv, fast_ref
 bool fast_ortho_size_f64(const double* inputs, const conventions& conv, fast_reference& out);
 bool fast_perspective_size_f32(const double* inputs, const conventions& conv, fast_reference& out);
 bool fast_perspective_size_f64(const double* inputs, const conventions& conv, fast_reference& out);
+// The camera builders with irrational values (kernels/camera.cpp): no exact stage, they return
+// false where their bounds do not decide, and the generic oracle decides.
+bool fast_perspective_fov_f32(const double* inputs, const conventions& conv, fast_reference& out);
+bool fast_perspective_fov_f64(const double* inputs, const conventions& conv, fast_reference& out);
+bool fast_perspective_fov_infinite_f32(const double* inputs, const conventions& conv, fast_reference& out);
+bool fast_perspective_fov_infinite_f64(const double* inputs, const conventions& conv, fast_reference& out);
+bool fast_look_at_f32(const double* inputs, const conventions& conv, fast_reference& out);
+bool fast_look_at_f64(const double* inputs, const conventions& conv, fast_reference& out);
+bool fast_target_to_f32(const double* inputs, const conventions& conv, fast_reference& out);
+bool fast_target_to_f64(const double* inputs, const conventions& conv, fast_reference& out);
 
 /// For tests: when true, every kernel skips its filter stage and decides with exact expansions
 /// alone, so that the exact stage is checked on every case, not only where the filter gives up.

@@ -47,7 +47,7 @@ if(TARGET shadowproof_impls)
   foreach(op perspective-fov-infinite look-at target-to ortho-size perspective-size)
     shadowproof_cli_case(NAME "check runs the ${op} implementations"
       ARGS check --impl all --op ${op} --cases 6 EXPECT_CODE 0
-      STDOUT_REGEX "correctly-rounded-[a-z0-9-]+ +exact +6 +- +- +- +- +- +- +-\n")
+      STDOUT_REGEX "correctly-rounded-[a-z0-9.-]+ +exact +6 +- +- +- +- +- +- +-\n")
   endforeach()
 endif()
 

@@ -43,14 +43,16 @@ inline auto round_to_float(const basic_bounded<R>& x, R& out) {
 }
 
 /// A denominator D within d prepared once for every quotient over it: its inflated bound,
-/// a lower bound on |D|, and 1/d.v rounded once.
+/// a lower bound on |D| and an upper bound on its reciprocal (the quotients' bounds multiply by
+/// it: a division per quotient costs more than the rest of its bound), and 1/d.v rounded once.
 template <class R>
 struct basic_bounded_denominator {
-  R v = R(0.0), e = R(0.0), lower = R(0.0), inverse = R(0.0);
+  R v = R(0.0), e = R(0.0), lower = R(0.0), inverse = R(0.0), inverse_lower = R(0.0);
   basic_bounded_denominator() = default;
   explicit basic_bounded_denominator(const basic_bounded<R>& d) : v(d.v), e(d.e * R(inflate)) {
     lower = (magnitude(v) - e) * R(1 - 0x1p-50);  // the subtraction's rounding, pushed down
     inverse = R(1.0) / v;
+    inverse_lower = R(1.0) / lower * R(1 + 0x1p-50);  // ≥ 1/lower: one rounding, pushed up
   }
   /// The bound excludes 0 (else no quotient over it is decided).
   auto usable() const { return lower > R(0.0); }
@@ -62,7 +64,7 @@ using bounded_denominator = basic_bounded_denominator<double>;
 template <class R>
 inline auto round_quotient_to_float(const basic_bounded<R>& num, const basic_bounded_denominator<R>& den, R& out) {
   const R q = num.v * den.inverse;
-  const R E = (num.e * R(inflate) + magnitude(q) * R(1 + 0x1p-50) * den.e) / den.lower * R(inflate) +
+  const R E = (num.e * R(inflate) + magnitude(q) * R(1 + 0x1p-50) * den.e) * den.inverse_lower * R(inflate) +
               R(3 * unit_roundoff) * magnitude(q);
   return den.usable() & round_interval_to_float(q, E, out);
 }
@@ -106,11 +108,12 @@ inline auto round_to_double(const basic_bounded_pair<R>& x, R& out) {
 /// A double-double denominator D within d, prepared once for every quotient over it.
 template <class R>
 struct basic_pair_denominator {
-  R hi = R(0.0), lo = R(0.0), e = R(0.0), lower = R(0.0), inverse = R(0.0);
+  R hi = R(0.0), lo = R(0.0), e = R(0.0), lower = R(0.0), inverse = R(0.0), inverse_lower = R(0.0);
   basic_pair_denominator() = default;
   explicit basic_pair_denominator(const basic_bounded_pair<R>& d) : hi(d.hi), lo(d.lo), e(d.e * R(inflate)) {
     lower = (magnitude(hi) - magnitude(lo) - e) * R(1 - 0x1p-50);
     inverse = R(1.0) / hi;
+    inverse_lower = R(1.0) / lower * R(1 + 0x1p-50);  // ≥ 1/lower: one rounding, pushed up
   }
   /// The bound excludes 0.
   auto usable() const { return lower > R(0.0); }
@@ -130,8 +133,8 @@ inline void pair_quotient(const basic_bounded_pair<R>& num, const basic_pair_den
                                    basic_bounded_pair<R>(q1) * basic_bounded_pair<R>(den.hi, den.lo, R(0.0));
   q2 = r1.hi * den.inverse;
   E = (num.e * R(inflate) + (magnitude(q1) + magnitude(q2)) * den.e + R(3 * unit_roundoff) * magnitude(r1.hi) +
-       magnitude(r1.lo) + r1.e * R(inflate) + magnitude(q2 * den.lo) * R(1 + 0x1p-50)) /
-      den.lower * R(inflate);
+       magnitude(r1.lo) + r1.e * R(inflate) + magnitude(q2 * den.lo) * R(1 + 0x1p-50)) *
+      den.inverse_lower * R(inflate);
 }
 
 /// num/den correctly rounded to double; an exactly zero numerator gives 0.

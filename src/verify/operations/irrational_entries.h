@@ -2,10 +2,12 @@
 // What the operations with irrational exact values share (perspective-fov, look-at,
 // target-to). Over rationals their exact outputs are correctly rounding representatives
 // (constructions/irrational.h): the lower end of the first MPFR enclosure, at 64, 128, … bits,
-// whose ends round alike, decided by Ziv's strategy. Over intervals they are enclosures of
-// the exact values themselves (√ of an interval, cot(fovy/2) from a 64-bit MPFR enclosure),
-// which decide the rounding in nearly every case; an interval that does not throws
-// `undecided`, and the rational oracle decides.
+// whose ends round alike, decided by Ziv's strategy. Their kernels (kernels/camera.cpp) decide
+// the rounding of nearly every case in double or double-double; over intervals (the cases the
+// kernels decline, and the verdicts' sensitivities) they are enclosures of the exact values
+// themselves (√ of an interval, cot(fovy/2) from the double-double enclosure of
+// kernels/cotangent.h or, outside its range, a 64-bit MPFR one); an interval that does not
+// decide throws `undecided`, and the rational oracle decides.
 #include <cmath>
 #include <cstddef>
 #include <type_traits>

@@ -163,6 +163,9 @@ operation_spec make() {
   s.exact_rational = exact<rational, placement>;
   s.exact_ival32 = exact<ival32, placement>;
   s.exact_ival64 = exact<ival64, placement>;
+  s.fast_f32 = placement ? fast_target_to_f32 : fast_look_at_f32;
+  s.fast_f64 = placement ? fast_target_to_f64 : fast_look_at_f64;
+  s.fast_kernels_read_handedness = true;
   // No derivatives over dual numbers (square roots): the verdicts take the generic
   // sensitivities (conditioning.cpp). Longest path of the straightforward evaluation: the
   // difference eye − target, |w|² (three), the square root and the division, the cross product

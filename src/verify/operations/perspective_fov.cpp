@@ -15,6 +15,7 @@
 #include <limits>
 #include <type_traits>
 
+#include "../kernels/cotangent.h"
 #include "irrational_entries.h"
 #include "view_volume.h"
 
@@ -57,9 +58,17 @@ exact_outputs<rational> exact_rational(const double* in, const conventions& conv
   return r;
 }
 
-// lo ≤ cot(fovy/2) ≤ hi: the 64-bit MPFR enclosure of cot_half_angle read into long double,
-// whose 64-bit significand holds both ends exactly. The last angle is remembered per thread:
-// the verdicts' sensitivities evaluate the same angle while they perturb the other inputs.
+// lo ≤ cot(fovy/2) ≤ hi, and the rational oracle's representative of cot(fovy/2) within
+// [lo, hi] widened by 2^-62 of its magnitude (conditioning.cpp's representative_enclosure).
+// From the double-double enclosure (kernels/cotangent.h) where it covers the angle: in
+// radians the representative is within 2^-63 |cot| of cot (MPFR's directed roundings at
+// p ≥ 64 bits), inside that widening. In degrees MPFR encloses h = fovy·π/360 first, within
+// 3·2^-63 h on each side at 64 bits (and nested inside at more bits), so the representative is
+// within 6.2·2^-63 h / sin²h + 2^-62 |cot h| of cot h; h/sin h ≤ π/2 and 1/sin h ≤ 1 + cot h
+// make that at most 2^-58 (1 + cot h), by which the enclosure is widened. Otherwise the
+// 64-bit MPFR enclosure itself, read into long double, whose 64-bit significand holds both
+// ends exactly. The last angle is remembered per thread: the verdicts' sensitivities evaluate
+// the same angle while they perturb the other inputs.
 struct cot_bounds {
   long double lo, hi;
 };
@@ -68,17 +77,24 @@ cot_bounds cot_half_angle_64(double fovy, angle_unit unit) {
   thread_local angle_unit last_unit = angle_unit::radians;
   thread_local cot_bounds last{};
   if (fovy == last_fovy && unit == last_unit) return last;
-  const enclosure e = cot_half_angle(fovy, unit, 64);
-  mpfr_t x;
-  mpfr_init2(x, 64);
-  mpfr_set_q(x, e.lo.get_mpq_t(), MPFR_RNDD);  // exact: a 64-bit number
-  const long double lo = mpfr_get_ld(x, MPFR_RNDD);
-  mpfr_set_q(x, e.hi.get_mpq_t(), MPFR_RNDU);
-  const long double hi = mpfr_get_ld(x, MPFR_RNDU);
-  mpfr_clear(x);
+  cot_pair c;
+  if (cot_half_angle_pair(fovy, unit, c)) {
+    double w = c.e;
+    if (unit == angle_unit::degrees) w += (1 + (std::fabs(c.hi) + c.e) * (1 + 0x1p-50)) * 0x1p-58 * (1 + 0x1p-50);
+    const ival64 v = ival64::point(c.hi) + ival64::point(c.lo) + ival64::between(-w, w);
+    last = {v.lower(), v.upper()};
+  } else {
+    const enclosure e = cot_half_angle(fovy, unit, 64);
+    mpfr_t x;
+    mpfr_init2(x, 64);
+    mpfr_set_q(x, e.lo.get_mpq_t(), MPFR_RNDD);  // exact: a 64-bit number
+    last.lo = mpfr_get_ld(x, MPFR_RNDD);
+    mpfr_set_q(x, e.hi.get_mpq_t(), MPFR_RNDU);
+    last.hi = mpfr_get_ld(x, MPFR_RNDU);
+    mpfr_clear(x);
+  }
   last_fovy = fovy;
   last_unit = unit;
-  last = {lo, hi};
   return last;
 }
 
@@ -101,7 +117,7 @@ exact_outputs<N> enclosed(const double* in, const conventions& conv) {
   exact_outputs<N> r;
   const double fovy = in[0];
   const bool no_field = fovy == 0;
-  if ((!no_field && !field_of_view_in_range(fovy, conv.angle)) || !(in[1] > 0) || !(in[2] > 0) ||
+  if ((!no_field && !field_of_view_inside_half_turn(fovy, conv.angle)) || !(in[1] > 0) || !(in[2] > 0) ||
       (!infinite && !(in[3] > 0))) {
     r.set_undefined(16);
     return r;
@@ -234,6 +250,9 @@ operation_spec make() {
   s.exact_rational = exact<rational, infinite>;
   s.exact_ival32 = exact<ival32, infinite>;
   s.exact_ival64 = exact<ival64, infinite>;
+  s.fast_f32 = infinite ? fast_perspective_fov_infinite_f32 : fast_perspective_fov_f32;
+  s.fast_f64 = infinite ? fast_perspective_fov_infinite_f64 : fast_perspective_fov_f64;
+  s.fast_kernels_read_handedness = true;
   // No derivatives over dual numbers (cot is irrational): the verdicts take the generic
   // sensitivities (conditioning.cpp). cot(fovy/2) as 1/tan: the angle's conversion (two
   // roundings in degrees), tan, the reciprocal, the quotient by aspect; A and B three: c = 2 × 5.
