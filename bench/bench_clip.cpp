@@ -1,8 +1,9 @@
 // Exact shadow regions of meshes against Clipper's union of the same triangles, in one run.
 //
-//   bench_clip [--data DIR] [--quick] [--skip-meshes] [--only NAME] [--no-clipper]
+//   bench_clip [--data DIR] [--quick] [--skip-meshes] [--only NAME] [--no-clipper] [--arrangement]
 //   (--quick: without the 1M-triangle meshes; --skip-meshes: without the 1k-50k spheres and tori;
-//   --no-clipper: the exact runs only, for profiling them; no ratio is printed)
+//   --no-clipper: the exact runs only, for profiling them; no ratio is printed; --arrangement:
+//   the silhouette builder with CGAL's arrangement instead of its own sweep)
 //   bench_clip --write-off DIR
 //   (writes DIR/sphere-1M.off, the 1M-triangle sphere with its coordinates as exact decimals,
 //   and DIR/sphere-1M.json, its scene, for bench/bench_clip_cli.sh)
@@ -49,6 +50,8 @@ using namespace shadowproof;
 namespace {
 
 const double pi = 3.14159265358979323846;
+
+clip_method exact_method = clip_method::automatic;  // --arrangement: clip_method::arrangement
 
 // A mesh in doubles (every coordinate exactly what the rational mesh holds).
 struct dmesh {
@@ -340,6 +343,7 @@ result run_exact(const bench_case& c, bool facing_only, int reps, const std::str
         clip_options o;
         o.keep_projected = false;
         o.detect_overlap = false;
+        o.method = exact_method;
         const shadow_region region = compute_shadow_region(s, o);
         r.area = approximate_area(region);
         r.silhouette = region.silhouette_edges;
@@ -446,12 +450,13 @@ int main(int argc, char** argv) {
     else if (std::strcmp(argv[i], "--only") == 0 && i + 1 < argc) only = argv[++i];
     else if (std::strcmp(argv[i], "--skip-meshes") == 0) skip_meshes = true;
     else if (std::strcmp(argv[i], "--no-clipper") == 0) clipper = false;
+    else if (std::strcmp(argv[i], "--arrangement") == 0) exact_method = clip_method::arrangement;
     else if (std::strcmp(argv[i], "--write-off") == 0 && i + 1 < argc) {
       write_off({"sphere 1M", [] { return uv_sphere(708, 707); }}, argv[i + 1], "sphere-1M");
       return 0;
     }
     else {
-      std::fprintf(stderr, "usage: bench_clip [--data DIR] [--quick] [--skip-meshes] [--only NAME] [--no-clipper] | --write-off DIR\n");
+      std::fprintf(stderr, "usage: bench_clip [--data DIR] [--quick] [--skip-meshes] [--only NAME] [--no-clipper] [--arrangement] | --write-off DIR\n");
       return 2;
     }
   }

@@ -699,13 +699,13 @@ std::string scene_json(const scene& s) {
 // Both builders on one scene: either the same region in every field (polygons in 2D and 3D,
 // areas, zero-area pieces, cases, the picture's projected outlines) or the same error.
 // Returns 1 when a region was compared, 0 when both rejected the scene.
-int compare_builders(const scene& s, const std::string& what) {
+int compare_builders(const scene& s, const std::string& what, clip_method method = clip_method::silhouette) {
   INFO(what);
   INFO(scene_json(s));
   if (const char* dump = std::getenv("CLIP_DUMP")) { std::ofstream(dump) << scene_json(s); }
   clip_options reference_options, silhouette_options;
   reference_options.method = clip_method::union_of_pieces;
-  silhouette_options.method = clip_method::silhouette;
+  silhouette_options.method = method;
   std::string reference_error, silhouette_error;
   shadow_region a, b;
   try {
@@ -816,6 +816,58 @@ TEST_CASE("silhouette and union-of-pieces builders give the identical region on 
     compared += static_cast<std::size_t>(compare_builders(s, "overlapping soup " + std::to_string(i)));
   }
   CHECK(compared == 12);  // repeated or collinear vertices are legal in a mesh face
+}
+
+namespace {
+
+// A soup of triangles given by their chart corners (x, y) at height z = 1 (z = 2 for a third
+// corner marked by a negative x: |x|), times `scale`, under the light straight above, over
+// [0, 10]².
+scene flat_soup(const std::vector<std::array<std::array<int, 2>, 3>>& triangles, const rational& scale = 1) {
+  caster c;
+  c.name = "/casters/0/mesh";
+  for (const auto& t : triangles) {
+    for (const auto& q : t) c.vertices.push_back(p3(std::abs(q[0]) * scale, q[1] * scale, q[0] < 0 ? 2 : 1));
+    const std::size_t n = c.vertices.size();
+    c.faces.push_back({n - 3, n - 2, n - 1});
+  }
+  return make_scene(dir(0, 0, 1), {std::move(c)});
+}
+
+}  // namespace
+
+TEST_CASE("the sweep and the arrangement both give the union of pieces' region on degenerate soups") {
+  const std::vector<std::pair<std::string, scene>> soups = {
+      // Eight thin triangles whose long edges all cross at (5, 5), both orientations.
+      {"crossings through one point",
+       flat_soup({{{{1, 5}, {9, 5}, {5, 6}}}, {{{5, 1}, {5, 9}, {4, 5}}}, {{{2, 2}, {8, 8}, {3, 2}}},
+                  {{{2, 8}, {8, 2}, {8, 3}}}, {{{3, 1}, {7, 9}, {3, 2}}}, {{{1, 3}, {9, 7}, {1, 4}}},
+                  {{{7, 1}, {3, 9}, {7, 2}}}, {{{9, 3}, {1, 7}, {9, 2}}}})},
+      // Bases overlapping on y = 2 and on x = 2 (vertical), one inside another, one shared.
+      {"overlapping collinear edges",
+       flat_soup({{{{1, 2}, {5, 2}, {3, 4}}}, {{{3, 2}, {8, 2}, {5, 1}}}, {{{2, 2}, {4, 2}, {3, 3}}},
+                  {{{4, 2}, {6, 2}, {5, 5}}}, {{{2, 4}, {2, 8}, {1, 6}}}, {{{2, 6}, {2, 9}, {4, 7}}},
+                  {{{2, 5}, {2, 7}, {3, 6}}}, {{{1, 2}, {5, 2}, {3, 0}}}})},
+      // Corners on other triangles' corners and edges (T-junctions), a fan around (5, 5), a
+      // triangle on the receiver's edge, one half outside it, one edge-on (a segment).
+      {"shared vertices and touching",
+       flat_soup({{{{5, 5}, {8, 5}, {8, 8}}}, {{{5, 5}, {5, 8}, {2, 8}}}, {{{5, 5}, {2, 5}, {2, 2}}},
+                  {{{5, 5}, {5, 2}, {8, 2}}}, {{{6, 5}, {7, 3}, {9, 4}}}, {{{0, 1}, {0, 4}, {2, 2}}},
+                  {{{9, 8}, {12, 9}, {9, 10}}}, {{{1, 9}, {4, 9}, {-3, 9}}}, {{{8, 5}, {8, 8}, {9, 6}}}})},
+      // The first soup scaled by (3^25 + 1)/3^25: line coefficients beyond 64 bits.
+      {"crossings through one point, scaled",
+       flat_soup({{{{1, 5}, {9, 5}, {5, 6}}}, {{{5, 1}, {5, 9}, {4, 5}}}, {{{2, 2}, {8, 8}, {3, 2}}},
+                  {{{2, 8}, {8, 2}, {8, 3}}}, {{{3, 1}, {7, 9}, {3, 2}}}, {{{1, 3}, {9, 7}, {1, 4}}}},
+                 rational(mpz_class("847288609444"), mpz_class("847288609443")))},
+      // The same triangle twice and twice reversed, and a vertical edge shared by two.
+      {"repeated and reversed triangles",
+       flat_soup({{{{2, 2}, {6, 3}, {3, 6}}}, {{{2, 2}, {6, 3}, {3, 6}}}, {{{2, 2}, {3, 6}, {6, 3}}},
+                  {{{6, 3}, {6, 7}, {8, 5}}}, {{{6, 3}, {6, 7}, {4, 5}}}})},
+  };
+  for (const auto& [what, s] : soups) {
+    CHECK(compare_builders(s, what, clip_method::silhouette) == 1);
+    CHECK(compare_builders(s, what, clip_method::arrangement) == 1);
+  }
 }
 
 TEST_CASE("light on the receiver plane: only the casters' footprint in the plane shades") {

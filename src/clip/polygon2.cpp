@@ -260,12 +260,19 @@ bool ccw_before(const point2& a, const point2& x, const point2& y) {
 // touches itself, an incoming edge continues with the outgoing edge first met turning
 // clockwise from it, which keeps to the piece on its left. The cycles do not depend on how
 // the input walks were chosen or where they start.
-std::vector<std::vector<point2>> component_cycles(const std::vector<std::vector<point2>>& walks) {
+std::vector<std::vector<point2>> link_cycles(const std::vector<const point2*>& point_of,
+                                             const std::vector<std::array<std::size_t, 2>>& numbered);
+
+// The same from the boundary's directed edges (from, to), in any order.
+std::vector<std::vector<point2>> component_cycles(const std::vector<std::array<const point2*, 2>>& boundary) {
   // Every vertex numbered once, in lexicographic order (one sort of the corners; the walk
   // then runs on numbers and compares points only where the boundary touches itself).
   std::vector<const point2*> corners;
-  for (const auto& w : walks)
-    for (const auto& p : w) corners.push_back(&p);
+  corners.reserve(2 * boundary.size());
+  for (const auto& e : boundary) {
+    corners.push_back(e[0]);
+    corners.push_back(e[1]);
+  }
   // Compared by their truncated doubles first: GMP's conversion is monotone, so different
   // doubles order the rationals and only equal ones are compared exactly.
   std::vector<std::array<double, 2>> approx(corners.size());
@@ -288,13 +295,20 @@ std::vector<std::vector<point2>> component_cycles(const std::vector<std::vector<
     if (point_of.empty() || *point_of.back() != *corners[k]) point_of.push_back(corners[k]);
     id[k] = point_of.size() - 1;
   }
+  std::vector<std::array<std::size_t, 2>> numbered(boundary.size());
+  for (std::size_t e = 0; e < boundary.size(); ++e) numbered[e] = {id[2 * e], id[2 * e + 1]};
+  return link_cycles(point_of, numbered);
+}
+
+// The cycles of the boundary edges `numbered` between distinct points point_of[i].
+std::vector<std::vector<point2>> link_cycles(const std::vector<const point2*>& point_of,
+                                             const std::vector<std::array<std::size_t, 2>>& numbered) {
   std::vector<std::vector<std::size_t>> out_edges(point_of.size());  // vertex -> targets of its outgoing edges
   std::size_t edges = 0;
-  for (std::size_t w = 0, base = 0; w < walks.size(); base += walks[w].size(), ++w)
-    for (std::size_t i = 0; i < walks[w].size(); ++i) {
-      out_edges[id[base + i]].push_back(id[base + (i + 1) % walks[w].size()]);
-      ++edges;
-    }
+  for (const auto& e : numbered) {
+    out_edges[e[0]].push_back(e[1]);
+    ++edges;
+  }
   // Successor of the edge u -> v.
   const auto next = [&](std::size_t u, std::size_t v) -> std::size_t {
     const auto& targets = out_edges[v];
@@ -331,6 +345,31 @@ std::vector<std::vector<point2>> component_cycles(const std::vector<std::vector<
       cycles.push_back(std::move(cycle));
     }
   return cycles;
+}
+
+std::vector<std::vector<point2>> component_cycles(const std::vector<std::vector<point2>>& walks) {
+  std::vector<std::array<const point2*, 2>> boundary;
+  for (const auto& w : walks)
+    for (std::size_t i = 0; i < w.size(); ++i) boundary.push_back({&w[i], &w[(i + 1) % w.size()]});
+  return component_cycles(boundary);
+}
+
+// The same from edges (from, to) between vertices[from] and vertices[to], distinct points.
+std::vector<std::vector<point2>> component_cycles(const std::vector<std::array<std::uint32_t, 2>>& boundary,
+                                                  const std::vector<const point2*>& vertices) {
+  std::vector<std::uint32_t> used;
+  used.reserve(2 * boundary.size());
+  for (const auto& e : boundary) used.insert(used.end(), {e[0], e[1]});
+  std::sort(used.begin(), used.end());
+  used.erase(std::unique(used.begin(), used.end()), used.end());
+  std::vector<const point2*> point_of(used.size());
+  for (std::size_t i = 0; i < used.size(); ++i) point_of[i] = vertices[used[i]];
+  const auto local = [&](std::uint32_t v) {
+    return static_cast<std::size_t>(std::lower_bound(used.begin(), used.end(), v) - used.begin());
+  };
+  std::vector<std::array<std::size_t, 2>> numbered(boundary.size());
+  for (std::size_t e = 0; e < boundary.size(); ++e) numbered[e] = {local(boundary[e][0]), local(boundary[e][1])};
+  return link_cycles(point_of, numbered);
 }
 
 // The orientation of a boundary cycle of one connected open piece (the piece on its left, the
@@ -370,51 +409,46 @@ bool inside_ring(const std::vector<point2>& ring, const point2& q) {
   return in;
 }
 
-}  // namespace
-
-std::vector<region_polygon> canonical_polygons(std::vector<ring_with_holes> polygons, const receiver_chart& chart) {
-  // The boundary cycles of the region's connected open pieces: counter-clockwise ones bound
-  // polygons, clockwise ones holes, each inside the smallest polygon around it. Two pieces
-  // touching at a point are two polygons.
-  // Each input polygon with holes is a union of such pieces (a piece's boundary never leaves
-  // the polygon it was given in), so it is re-linked and its holes assigned on its own.
-  std::vector<ring_with_holes> grouped;
-  for (auto& p : polygons) {
-    std::vector<std::vector<point2>> walks, outers, holes;
-    walks.push_back(std::move(p.first));
-    for (auto& h : p.second) walks.push_back(std::move(h));
-    for (auto& cycle : component_cycles(walks)) {
-      erase_indices(cycle, straight_vertices(cycle));
-      const int orientation = cycle_orientation(cycle);
-      if (orientation > 0) outers.push_back(canonical_ring(std::move(cycle)));
-      else if (orientation < 0) holes.push_back(canonical_ring(std::move(cycle)));
-      else throw internal_error("a region boundary encloses no area");
-    }
-    if (outers.empty()) throw internal_error("a region polygon has no outer boundary");
-    const std::size_t first = grouped.size();
-    // Areas only to tell nested pieces apart, so only when a hole has several candidates.
-    std::vector<rational> outer_area;
-    for (auto& o : outers) {
-      if (outers.size() > 1 && !holes.empty()) outer_area.push_back(signed_area(o));
-      grouped.push_back({std::move(o), {}});
-    }
-    for (auto& h : holes) {
-      std::size_t best = 0;
-      if (outer_area.size() > 1) {
-        // The smallest of the polygon's pieces around the hole (a point on a hole edge is on
-        // no other boundary: pieces meet only at vertices).
-        const point2 q{(h[0][0] + h[1][0]) / 2, (h[0][1] + h[1][1]) / 2};
-        std::ptrdiff_t found = -1;
-        for (std::size_t i = 0; i < outer_area.size(); ++i)
-          if ((found < 0 || outer_area[i] < outer_area[static_cast<std::size_t>(found)]) &&
-              inside_ring(grouped[first + i].first, q))
-            found = static_cast<std::ptrdiff_t>(i);
-        if (found < 0) throw internal_error("a hole of a region lies in no polygon");
-        best = static_cast<std::size_t>(found);
-      }
-      grouped[first + best].second.push_back(std::move(h));
-    }
+// The boundary cycles of one group of the region's connected open pieces appended to
+// `grouped`: counter-clockwise ones bound polygons, clockwise ones holes, each inside the
+// smallest polygon around it. Two pieces touching at a point are two polygons.
+void add_group(std::vector<std::vector<point2>> cycles, std::vector<ring_with_holes>& grouped) {
+  std::vector<std::vector<point2>> outers, holes;
+  for (auto& cycle : cycles) {
+    erase_indices(cycle, straight_vertices(cycle));
+    const int orientation = cycle_orientation(cycle);
+    if (orientation > 0) outers.push_back(canonical_ring(std::move(cycle)));
+    else if (orientation < 0) holes.push_back(canonical_ring(std::move(cycle)));
+    else throw internal_error("a region boundary encloses no area");
   }
+  if (outers.empty()) throw internal_error("a region polygon has no outer boundary");
+  const std::size_t first = grouped.size();
+  // Areas only to tell nested pieces apart, so only when a hole has several candidates.
+  std::vector<rational> outer_area;
+  for (auto& o : outers) {
+    if (outers.size() > 1 && !holes.empty()) outer_area.push_back(signed_area(o));
+    grouped.push_back({std::move(o), {}});
+  }
+  for (auto& h : holes) {
+    std::size_t best = 0;
+    if (outer_area.size() > 1) {
+      // The smallest of the polygon's pieces around the hole (a point on a hole edge is on
+      // no other boundary: pieces meet only at vertices).
+      const point2 q{(h[0][0] + h[1][0]) / 2, (h[0][1] + h[1][1]) / 2};
+      std::ptrdiff_t found = -1;
+      for (std::size_t i = 0; i < outer_area.size(); ++i)
+        if ((found < 0 || outer_area[i] < outer_area[static_cast<std::size_t>(found)]) &&
+            inside_ring(grouped[first + i].first, q))
+          found = static_cast<std::ptrdiff_t>(i);
+      if (found < 0) throw internal_error("a hole of a region lies in no polygon");
+      best = static_cast<std::size_t>(found);
+    }
+    grouped[first + best].second.push_back(std::move(h));
+  }
+}
+
+// The groups in canonical order, lifted through the chart.
+std::vector<region_polygon> sorted_polygons(std::vector<ring_with_holes> grouped, const receiver_chart& chart) {
   for (auto& p : grouped) std::sort(p.second.begin(), p.second.end());
   std::sort(grouped.begin(), grouped.end());
   std::vector<region_polygon> out;
@@ -431,6 +465,29 @@ std::vector<region_polygon> canonical_polygons(std::vector<ring_with_holes> poly
     out.push_back(std::move(rp));
   }
   return out;
+}
+
+}  // namespace
+
+std::vector<region_polygon> canonical_polygons(std::vector<ring_with_holes> polygons, const receiver_chart& chart) {
+  // Each input polygon with holes is a union of the region's connected open pieces (a
+  // piece's boundary never leaves the polygon it was given in), so it is re-linked and its
+  // holes assigned on its own.
+  std::vector<ring_with_holes> grouped;
+  for (auto& p : polygons) {
+    std::vector<std::vector<point2>> walks;
+    walks.push_back(std::move(p.first));
+    for (auto& h : p.second) walks.push_back(std::move(h));
+    add_group(component_cycles(walks), grouped);
+  }
+  return sorted_polygons(std::move(grouped), chart);
+}
+
+std::vector<region_polygon> canonical_polygons(const std::vector<std::vector<std::array<std::uint32_t, 2>>>& pieces,
+                                               const std::vector<const point2*>& vertices, const receiver_chart& chart) {
+  std::vector<ring_with_holes> grouped;
+  for (const auto& boundary : pieces) add_group(component_cycles(boundary, vertices), grouped);
+  return sorted_polygons(std::move(grouped), chart);
 }
 
 std::vector<std::array<point2, 2>> canonical_pieces(const std::vector<std::array<point2, 2>>& pieces) {

@@ -4,6 +4,7 @@
 // canonical forms that make two computations of one region compare equal.
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -118,6 +119,13 @@ using ring_with_holes = std::pair<std::vector<point2>, std::vector<std::vector<p
 /// smallest polygon around them, every ring starting at its smallest rotation, holes and
 /// polygons sorted. 3D coordinates are lifted through the chart.
 std::vector<region_polygon> canonical_polygons(std::vector<ring_with_holes> polygons, const receiver_chart& chart);
+
+/// The same from the boundary of each group of pieces as directed edges (from, to) between
+/// vertices[from] and vertices[to] (distinct points), with the region on their left, in any
+/// order: each group a union of connected open pieces of the region (a piece's boundary in
+/// one group only).
+std::vector<region_polygon> canonical_polygons(const std::vector<std::vector<std::array<std::uint32_t, 2>>>& pieces,
+                                               const std::vector<const point2*>& vertices, const receiver_chart& chart);
 
 /// Zero-area pieces in canonical form: collinear segments that overlap or touch are merged
 /// into maximal ones, points lying on a segment are dropped, and the rest is sorted (segments

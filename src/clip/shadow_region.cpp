@@ -18,7 +18,8 @@ shadow_region build(const scene& s, const plane<rational>& P, const clip_options
   switch (options.method) {
     case clip_method::union_of_pieces: return detail::union_of_pieces_region(s, P, options);
     case clip_method::automatic:
-    case clip_method::silhouette: break;
+    case clip_method::silhouette:
+    case clip_method::arrangement: break;
   }
   return detail::silhouette_region(s, P, options);
 }

@@ -13,6 +13,7 @@
 #include "builders.h"
 #include "chain.h"
 #include "kernel.h"
+#include "planar_sweep.h"
 #include "polygon2.h"
 #include "polygon_set.h"
 #include "region_setup.h"
@@ -291,6 +292,181 @@ void add_chain(std::vector<xcurve>& curves, segment_lines& lines, const caster_c
           make_curve(lines, chain.points[s.a], chain.points[s.b], points[s.a], points[s.b], s.weight, 0, false));
 }
 
+// --- the same from the sweep (planar_sweep.h) -----------------------------------------------
+
+// The boundary of the region of faces with `in(windings)` in a planar map: its directed
+// edges (region on the left) grouped by connected open piece, and the region's area
+// ½ Σ (x_from y_to − x_to y_from) over them. Pieces are found with a union–find over the
+// edges: two edges next to each other on the sweep line with the region between them bound
+// the same piece.
+struct swept_boundary {
+  std::vector<std::vector<std::array<std::uint32_t, 2>>> pieces;
+  rational area{0};
+};
+
+template <class In>
+swept_boundary swept_region_boundary(const planar_map& m, In in, bool with_area) {
+  std::vector<std::uint32_t> parent(m.edges.size());
+  std::iota(parent.begin(), parent.end(), std::uint32_t(0));
+  const auto find = [&](std::uint32_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  for (const auto& [lower, upper] : m.adjacent)
+    if (in(m.edges[lower].above())) parent[find(lower)] = find(upper);
+  swept_boundary out;
+  std::vector<std::ptrdiff_t> piece_of(m.edges.size(), -1);
+  std::vector<rational> terms;
+  for (std::uint32_t e = 0; e < m.edges.size(); ++e) {
+    const auto& E = m.edges[e];
+    const bool below = in(E.below), above = in(E.above());
+    if (below == above) continue;
+    const std::uint32_t from_id = above ? E.lo : E.hi, to_id = above ? E.hi : E.lo;
+    const point2 *from = m.vertices[from_id], *to = m.vertices[to_id];
+    auto& k = piece_of[find(e)];
+    if (k < 0) {
+      k = static_cast<std::ptrdiff_t>(out.pieces.size());
+      out.pieces.emplace_back();
+    }
+    out.pieces[static_cast<std::size_t>(k)].push_back({from_id, to_id});
+    if (with_area) terms.push_back((*from)[0] * (*to)[1] - (*to)[0] * (*from)[1]);
+  }
+  if (with_area) out.area = balanced_sum(std::move(terms)) / 2;
+  return out;
+}
+
+std::vector<sweep_segment> chain_segments(const caster_chain& chain, std::vector<const point2*>& points) {
+  std::vector<sweep_segment> out;
+  const std::size_t base = points.size();
+  for (const auto& p : chain.points) points.push_back(&p);
+  for (const auto& s : chain.segments)
+    if (s.weight != 0) out.push_back({base + s.a, base + s.b, s.weight, 0, false});
+  return out;
+}
+
+// The region of silhouette_region from the sweep instead of an arrangement: the same fields
+// by the same rules, read off the planar map (the faces around a vertex are the faces on
+// both sides of its edges). False when the sweep declines the input (then nothing is set).
+bool swept_region(const clip_setup& setup, const std::vector<caster_chain>& chains,
+                  const std::vector<std::array<point2, 2>>& degenerate, const clip_options& options, case_set& cases,
+                  shadow_region& r) {
+  std::vector<const point2*> points;
+  std::vector<sweep_segment> segments;
+  for (const auto& chain : chains) {
+    auto own = chain_segments(chain, points);
+    segments.insert(segments.end(), own.begin(), own.end());
+  }
+  const auto add_ring = [&](const std::vector<point2>& boundary) {
+    const std::size_t base = points.size();
+    for (const auto& p : boundary) points.push_back(&p);
+    for (std::size_t i = 0; i < boundary.size(); ++i)
+      segments.push_back({base + i, base + (i + 1) % boundary.size(), 0, 1, false});
+  };
+  add_ring(setup.receiver_outer);
+  for (const auto& h : setup.receiver_holes) add_ring(h);  // clockwise: −1 inside
+  std::vector<std::size_t> point_pieces;
+  for (const auto& d : degenerate) {
+    const std::size_t base = points.size();
+    points.push_back(&d[0]);
+    if (d[0] == d[1]) {
+      point_pieces.push_back(base);
+    } else {
+      points.push_back(&d[1]);
+      segments.push_back({base, base + 1, 0, 0, true});
+    }
+  }
+  // Overlaps first: each caster's shadow area alone (a declined sweep declines everything).
+  const bool overlap = options.detect_overlap && chains.size() > 1;
+  std::vector<rational> own_areas;
+  if (overlap)
+    for (const auto& chain : chains) {
+      std::vector<const point2*> own_points;
+      const auto own = chain_segments(chain, own_points);
+      const auto map = planar_sweep(own_points, own, {});
+      if (!map) return false;
+      own_areas.push_back(swept_region_boundary(*map, [](const windings& w) { return w[0] > 0; }, true).area);
+    }
+  const auto swept = planar_sweep(points, segments, point_pieces);
+  if (!swept) return false;
+  const planar_map& m = *swept;
+
+  const auto in_shadow = [](const windings& w) { return w[0] > 0; };
+  const auto in_receiver = [](const windings& w) { return w[1] > 0; };
+  const auto in_result = [&](const windings& w) { return in_shadow(w) && in_receiver(w); };
+  if (overlap || options.keep_projected) {
+    swept_boundary shadow = swept_region_boundary(m, in_shadow, overlap);
+    if (overlap && balanced_sum(std::move(own_areas)) != shadow.area) cases.insert(shadow_case::shadows_overlap);
+    if (options.keep_projected) {
+      for (const auto& p : canonical_polygons(shadow.pieces, m.vertices, r.chart)) {
+        r.projected_loops.push_back(p.outer);
+        for (const auto& h : p.holes) r.projected_loops.push_back(h);
+      }
+      r.projected_degenerate = canonical_pieces(degenerate);
+    }
+  }
+  // Every bounded face lies on a side of some edge; an isolated point lies in a face too.
+  bool outside = false;
+  for (const auto& e : m.edges)
+    for (const windings& w : {e.below, e.above()}) outside = outside || (in_shadow(w) && !in_receiver(w));
+  if (outside) cases.insert(shadow_case::shadow_outside_receiver);
+  const swept_boundary result = swept_region_boundary(m, in_result, false);
+  r.polygons = canonical_polygons(result.pieces, m.vertices, r.chart);
+  // The area from the canonical rings: consecutive shoelace terms share a vertex, so partial
+  // sums along a ring keep smaller denominators than over the edges in any order.
+  std::vector<rational> ring_areas;
+  for (const auto& p : r.polygons) {
+    ring_areas.push_back(signed_area(p.outer));
+    for (const auto& h : p.holes) ring_areas.push_back(signed_area(h));
+  }
+  r.chart_area = balanced_sum(std::move(ring_areas));
+  r.area_squared = r.chart_area * r.chart_area * r.chart.area_scale_squared;
+
+  // Zero-area pieces in the closed receiver and outside the closed result, and contacts of
+  // the shadow's boundary with the receiver's boundary outside the closed result.
+  struct vertex_contacts {
+    bool edges = false, from_caster = false, shadow_edge = false, receiver_edge = false, receiver = false, result = false;
+  };
+  std::vector<vertex_contacts> at(m.vertices.size());
+  std::vector<std::array<point2, 2>> kept;
+  bool contact = false;
+  for (const auto& e : m.edges) {
+    const windings f = e.above(), g = e.below;
+    const bool shadow_edge = in_shadow(f) != in_shadow(g), receiver_edge = in_receiver(f) != in_receiver(g);
+    const bool receiver = in_receiver(f) || in_receiver(g), in_region = in_result(f) || in_result(g);
+    for (const auto v : {e.lo, e.hi}) {
+      auto& a = at[v];
+      a.edges = true;
+      a.from_caster = a.from_caster || e.degenerate;
+      a.shadow_edge = a.shadow_edge || shadow_edge;
+      a.receiver_edge = a.receiver_edge || receiver_edge;
+      a.receiver = a.receiver || receiver;
+      a.result = a.result || in_region;
+    }
+    if (!(e.degenerate || (shadow_edge && receiver_edge)) || !(receiver && !in_region)) continue;
+    kept.push_back({*m.vertices[e.lo], *m.vertices[e.hi]});
+    if (shadow_edge && receiver_edge) contact = true;
+  }
+  for (std::size_t v = 0; v < m.vertices.size(); ++v) {
+    auto a = at[v];
+    if (!a.edges) {
+      if (!m.point_piece[v]) continue;  // not a vertex of the map
+      a.receiver = in_receiver(m.isolated[v]);
+      a.result = in_result(m.isolated[v]);
+    }
+    a.from_caster = a.from_caster || m.point_piece[v];
+    const bool touching = a.shadow_edge && a.receiver_edge;
+    if (!(a.from_caster || touching) || !(a.receiver && !a.result)) continue;
+    kept.push_back({*m.vertices[v], *m.vertices[v]});
+    if (touching) contact = true;
+  }
+  if (contact) cases.insert(shadow_case::shadow_touches_receiver_boundary);
+  for (const auto& k : canonical_pieces(kept))
+    r.degenerate.push_back({k[0], k[1], r.chart.lift(k[0]), r.chart.lift(k[1])});
+  if (!r.degenerate.empty()) cases.insert(shadow_case::degenerate_shadow);
+  if (r.polygons.empty() && r.degenerate.empty()) cases.insert(shadow_case::empty);
+  return true;
+}
+
 }  // namespace
 
 shadow_region silhouette_region(const scene& s, const plane<rational>& P, const clip_options& options) {
@@ -314,6 +490,14 @@ shadow_region silhouette_region(const scene& s, const plane<rational>& P, const 
     r.face_half_edges += chains.back().half_edges;
   }
   report("arrangement", total_faces);
+  if (options.method != clip_method::arrangement) {
+    case_set swept_cases = cases;
+    if (swept_region(setup, chains, degenerate, options, swept_cases, r)) {
+      r.cases.assign(swept_cases.begin(), swept_cases.end());
+      report("done", total_faces);
+      return r;
+    }
+  }
 
   std::vector<xcurve> curves;
   segment_lines lines;

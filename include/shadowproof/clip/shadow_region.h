@@ -122,12 +122,18 @@ enum class clip_method {
   automatic,
   /// Boundary chains: faces classified against the light by filtered predicates, half-edges
   /// shared by two faces cancelled without geometry, the remaining (silhouette) edges
-  /// projected exactly into one arrangement with the receiver, winding numbers assigned by
-  /// walking across its edges. O(n) before the arrangement, which holds O(silhouette) edges.
+  /// projected exactly and swept with the receiver's edges (every crossing computed once,
+  /// winding numbers carried across the sweep line). O(n) before the sweep, which holds
+  /// O(silhouette) edges; O((e + k) log e) for e edges with k crossings. Inputs the sweep
+  /// declines (coordinates beyond 2^±400, long segments overlapping in bulk) go to the
+  /// arrangement below.
   silhouette,
   /// The reference: every face split into convex pieces, each clipped and projected, one
   /// aggregate exact union of all pieces, then the intersection with the receiver.
   union_of_pieces,
+  /// The silhouette builder with CGAL's Arrangement_2 in place of the sweep (its winding
+  /// numbers assigned by walking across the arrangement's edges): a second reference.
+  arrangement,
 };
 
 /// Options of compute_shadow_region.
