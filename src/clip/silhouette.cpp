@@ -344,6 +344,19 @@ std::vector<sweep_segment> chain_segments(const caster_chain& chain, std::vector
   return out;
 }
 
+// The zero-area pieces kept on the receiver outside the region (segments and points, in chart
+// coordinates) written to r in canonical form and lifted to 3D, and the cases they make: a
+// shadow touching the receiver's boundary, a degenerate shadow, an empty one. Both region
+// builders (the sweep's and the arrangement's) end with it.
+void record_zero_area_pieces(const std::vector<std::array<point2, 2>>& kept, bool contact, case_set& cases,
+                             shadow_region& r) {
+  if (contact) cases.insert(shadow_case::shadow_touches_receiver_boundary);
+  for (const auto& k : canonical_pieces(kept))
+    r.degenerate.push_back({k[0], k[1], r.chart.lift(k[0]), r.chart.lift(k[1])});
+  if (!r.degenerate.empty()) cases.insert(shadow_case::degenerate_shadow);
+  if (r.polygons.empty() && r.degenerate.empty()) cases.insert(shadow_case::empty);
+}
+
 // The region of silhouette_region from the sweep instead of an arrangement: the same fields
 // by the same rules, read off the planar map (the faces around a vertex are the faces on
 // both sides of its edges). False when the sweep declines the input (then nothing is set).
@@ -459,11 +472,7 @@ bool swept_region(const clip_setup& setup, const std::vector<caster_chain>& chai
     kept.push_back({*m.vertices[v], *m.vertices[v]});
     if (touching) contact = true;
   }
-  if (contact) cases.insert(shadow_case::shadow_touches_receiver_boundary);
-  for (const auto& k : canonical_pieces(kept))
-    r.degenerate.push_back({k[0], k[1], r.chart.lift(k[0]), r.chart.lift(k[1])});
-  if (!r.degenerate.empty()) cases.insert(shadow_case::degenerate_shadow);
-  if (r.polygons.empty() && r.degenerate.empty()) cases.insert(shadow_case::empty);
+  record_zero_area_pieces(kept, contact, cases, r);
   return true;
 }
 
@@ -590,11 +599,7 @@ shadow_region silhouette_region(const scene& s, const plane<rational>& P, const 
     kept.push_back({p, p});
     if (touching) contact = true;
   }
-  if (contact) cases.insert(shadow_case::shadow_touches_receiver_boundary);
-  for (const auto& k : canonical_pieces(kept))
-    r.degenerate.push_back({k[0], k[1], r.chart.lift(k[0]), r.chart.lift(k[1])});
-  if (!r.degenerate.empty()) cases.insert(shadow_case::degenerate_shadow);
-  if (r.polygons.empty() && r.degenerate.empty()) cases.insert(shadow_case::empty);
+  record_zero_area_pieces(kept, contact, cases, r);
 
   if (options.keep_projected) {
     for (const auto& p : canonical_polygons(std::move(shadow_rings->polygons), r.chart)) {
