@@ -12,6 +12,9 @@
 //   bench/bench_oracle --agree=N [--impl=NAME]
 //       grades N regular and N near-degenerate cases per implementation with both oracles and
 //       reports any difference (exit 1), the check the unit tests run on a sample.
+//   bench/bench_oracle --split=ROUNDS [--op=NAME,...]
+//       the batch oracle (AVX2 where available) alone, regular cases, compute_references and
+//       grade_batch timed apart: a loop to run under a profiler, and where a batch's time goes
 //   bench/bench_oracle --gbench [Google Benchmark flags]   the same measurements per benchmark
 //
 // Method. Cases and the float code's outputs are generated before any clock starts. Each round
@@ -275,6 +278,40 @@ int table(std::size_t rounds, const std::string& ops) {
   return 0;
 }
 
+// The batch oracle alone on regular cases, `rounds` passes over 4096 cases per operation and
+// type: references and grades timed apart (thread CPU, whole passes), for a profiler to sample.
+int split(std::size_t rounds, const std::string& ops) {
+  const batch_path path = avx2_batch_available() ? batch_path::avx2 : batch_path::generic;
+  std::printf("load average before: %s; %s filter; %zu passes of 4096 cases\n\n", load_average().c_str(),
+              path == batch_path::avx2 ? "AVX2" : "generic", rounds);
+  std::printf("| operation / type | references | grades | both |\n|---|---|---|---|\n");
+  for (operation op : all_operations())
+    for (scalar_type type : {scalar_type::f32, scalar_type::f64}) {
+      if (!selected(op, ops)) continue;
+      workload w = make_workload(op, type, input_class::regular, 4096);
+      batch_references refs;
+      batch_grades grades;
+      double references = 0, grading = 0;
+      for (std::size_t r = 0; r < rounds; ++r) {
+        const double t0 = thread_seconds();
+        compute_references(w.batch, w.impl.conv, refs, nullptr, path);
+        const double t1 = thread_seconds();
+        grade_batch(w.batch, w.impl.conv, refs, grades, path);
+        grading += thread_seconds() - t1;
+        references += t1 - t0;
+        checksum += grades.max_ulps[r % w.batch.count];
+      }
+      const double cases = static_cast<double>(rounds * w.batch.count);
+      std::printf("| %s / %s | %.1f ns | %.1f ns | %s |\n", std::string(to_string(op)).c_str(),
+                  std::string(to_string(type)).c_str(), 1e9 * references / cases, 1e9 * grading / cases,
+                  rate(cases / (references + grading)).c_str());
+      std::fflush(stdout);
+    }
+  std::printf("\nload average after: %s; checksum %llu\n", load_average().c_str(),
+              static_cast<unsigned long long>(checksum));
+  return 0;
+}
+
 // What the verdicts cost: grade_case with verdicts against grade_case with values only
 // (grade_depth::values_only: ulps, classes and rejections, every verdict left exact), on the
 // same cases of every operation, type and class in alternating rounds, best round kept.
@@ -444,7 +481,7 @@ void register_benchmarks() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::size_t agree_count = 0, table_rounds = 3, thread_rounds = 0, verdict_rounds = 0;
+  std::size_t agree_count = 0, table_rounds = 3, thread_rounds = 0, verdict_rounds = 0, split_rounds = 0;
   bool gbench = false;
   std::string only, ops;
   for (int i = 1; i < argc; ++i) {
@@ -452,6 +489,7 @@ int main(int argc, char** argv) {
     else if (std::strncmp(argv[i], "--table=", 8) == 0) table_rounds = std::stoul(argv[i] + 8);
     else if (std::strncmp(argv[i], "--threads=", 10) == 0) thread_rounds = std::stoul(argv[i] + 10);
     else if (std::strncmp(argv[i], "--verdicts=", 11) == 0) verdict_rounds = std::stoul(argv[i] + 11);
+    else if (std::strncmp(argv[i], "--split=", 8) == 0) split_rounds = std::stoul(argv[i] + 8);
     else if (std::strncmp(argv[i], "--impl=", 7) == 0) only = argv[i] + 7;
     else if (std::strncmp(argv[i], "--op=", 5) == 0) ops = argv[i] + 5;
     else if (std::strcmp(argv[i], "--gbench") == 0) gbench = true;
@@ -459,6 +497,7 @@ int main(int argc, char** argv) {
   if (agree_count) return agree(agree_count, only);
   if (thread_rounds) return threads(thread_rounds);
   if (verdict_rounds) return verdicts_cost(verdict_rounds);
+  if (split_rounds) return split(split_rounds, ops);
   if (!gbench) return table(table_rounds, ops);
   register_benchmarks();
   benchmark::Initialize(&argc, argv);

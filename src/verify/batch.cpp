@@ -416,17 +416,32 @@ void compute_references_range(const case_batch& batch, const conventions& conv, 
   else std::fill(decided, decided + (end - first), std::uint8_t{0});
   const fast_kernel kernel =
       right_handed || spec.fast_kernels_read_handedness ? (f32 ? spec.fast_f32 : spec.fast_f64) : nullptr;
-  double in[16];
-  fast_reference r;
+  // The cases the filter decided have every output defined and no class (but shadow-point's,
+  // from the filter): written for every case in passes without a branch, the others' overwritten
+  // below. decided_by becomes 0 where the filter decided, 1 where not (until the case is).
+  std::fill(out.undefined.begin() + static_cast<std::ptrdiff_t>(first),
+            out.undefined.begin() + static_cast<std::ptrdiff_t>(end), std::uint32_t{0});
+  if (!point)
+    std::fill(out.point_class.begin() + static_cast<std::ptrdiff_t>(first),
+              out.point_class.begin() + static_cast<std::ptrdiff_t>(end), std::int8_t{-1});
   std::uint64_t intervals = 0, rationals = 0;
   for (std::size_t i = first; i < end; ++i) {
-    if (out.decided_by[i] == 1) {
-      out.decided_by[i] = 0;
-      out.undefined[i] = 0;
-      if (!point) out.point_class[i] = -1;
-      ++intervals;
-      continue;
+    intervals += decided[i - first];
+    out.decided_by[i] ^= 1;
+  }
+  double in[16];
+  fast_reference r;
+  for (std::size_t i = first; i < end; ++i) {
+    // Eight cases at a time while the filter decided all of them (eight zero bytes).
+    if (i + 8 <= end) {
+      std::uint64_t eight;
+      std::memcpy(&eight, out.decided_by.data() + i, sizeof eight);
+      if (eight == 0) {
+        i += 7;
+        continue;
+      }
     }
+    if (out.decided_by[i] == 0) continue;
     for (std::size_t c = 0; c < sig.input_count; ++c) in[c] = batch.inputs[c * count + i];
     if (kernel && kernel(in, conv, r)) {
       out.decided_by[i] = 1;

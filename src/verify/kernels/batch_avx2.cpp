@@ -51,6 +51,9 @@ inline m4d select(m4d m, m4d a, m4d b) { return {_mm256_blendv_pd(b.v, a.v, m.v)
 inline m4d no_lanes(v4d) { return {_mm256_setzero_pd()}; }
 // Round to float (to nearest, ties to even: the MXCSR default) and widen back.
 inline v4d round_to_float_value(v4d x) { return v4d(_mm256_cvtps_pd(_mm256_cvtpd_ps(x.v))); }
+inline v4d quotient_in_float(v4d a, v4d b) {
+  return v4d(_mm256_cvtps_pd(_mm_div_ps(_mm256_cvtpd_ps(a.v), _mm256_cvtpd_ps(b.v))));
+}
 inline void neighbours(v4d positive, v4d& above, v4d& below) {
   const __m256i bits = _mm256_castpd_si256(positive.v), one = _mm256_set1_epi64x(1);
   above = v4d(_mm256_castsi256_pd(_mm256_add_epi64(bits, one)));

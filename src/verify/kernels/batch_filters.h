@@ -4,7 +4,6 @@
 // aliasing between inputs and outputs), filtered lane by lane, and copied out.
 #include <cstddef>
 #include <cstdint>
-#include <type_traits>
 
 #include "batch.h"
 #include "frustum.h"
@@ -14,6 +13,7 @@
 #include "reflection_matrix.h"
 #include "shadow_matrix.h"
 #include "shadow_point.h"
+#include "view_size.h"
 
 namespace shadowproof::detail {
 inline namespace SHADOWPROOF_KERNEL_TARGET {
@@ -35,26 +35,15 @@ struct fraction_op {
     return filter_lanes<Form, F, R>(x, conv, values);
   }
 };
-/// ortho-size and perspective-size through a box form, as their kernels (view_size.cpp): the
-/// box (−w/2, w/2, −h/2, h/2, n, f) with symmetric_view set, in the lanes where w, h ≥ 0 and
-/// halving them is exact in F (the others are left to the kernel for one case).
+/// ortho-size and perspective-size through their own forms (view_size.h), in the lanes where
+/// w, h ≥ 0 (a negative extent has no projection: the kernel for one case takes those).
 template <class Form, class F>
 struct size_op {
   static constexpr int inputs = 4, outputs = Form::entries;
   template <class R>
-  static R doubled_in_type(R half) {
-    if constexpr (std::is_same_v<F, float>) return round_to_float_value(half) * R(2.0);
-    else return half * R(2.0);
-  }
-  template <class R>
   static auto run(R* x, const conventions& conv, R* values, R&) {
-    const R half_w = x[0] * R(0.5), half_h = x[1] * R(0.5);
-    const auto exact_halves = (x[0] >= R(0.0)) & (x[1] >= R(0.0)) & (doubled_in_type(half_w) == x[0]) &
-                              (doubled_in_type(half_h) == x[1]);
-    R box[6] = {-half_w, half_w, -half_h, half_h, x[2], x[3]};
-    conventions symmetric = conv;
-    symmetric.symmetric_view = true;
-    return exact_halves & filter_lanes<Form, F, R>(box, symmetric, values);
+    const auto extents = (x[0] >= R(0.0)) & (x[1] >= R(0.0));
+    return extents & filter_lanes<Form, F, R>(x, conv, values);
   }
 };
 
@@ -105,24 +94,35 @@ template <class Op>
 }
 
 /// The filter of one operation over all cases, R lanes at a time; a tail shorter than a
-/// vector is left undecided (the kernel for one case takes it).
+/// vector is left undecided (the kernel for one case takes it). The column pointers are copied
+/// first: the byte stores of the masks could otherwise alias them, and every store would
+/// reload them. flatten inlines the formula into the loop (no call, no spill of its lanes).
 template <class Op, class R>
-void filter_all(const double* const* in, std::size_t count, const conventions& conv, const batch_filter_out& out) {
+[[gnu::flatten]] void filter_all(const double* const* in, std::size_t count, const conventions& conv,
+                                 const batch_filter_out& out) {
   using L = lanes_of<R>;
   if constexpr (L::width == 1) {
     for (std::size_t first = 0; first < count; first += 16)
       filter_block<Op>(in, first, count - first < 16 ? count - first : 16, conv, out);
   } else {
+    const double* inputs[Op::inputs];
+    double* values[Op::outputs];
+    for (int k = 0; k < Op::inputs; ++k) inputs[k] = in[k];
+    for (int j = 0; j < Op::outputs; ++j) values[j] = out.values[j];
+    std::uint8_t* const decided = out.decided;
+    std::int8_t* const classes = out.point_class;
     std::size_t i = 0;
     for (; i + L::width <= count; i += L::width) {
       R x[Op::inputs], v[Op::outputs], cls = R(0.0);
-      for (int k = 0; k < Op::inputs; ++k) x[k] = L::load(in[k] + i);
+      SHADOWPROOF_UNROLL
+      for (int k = 0; k < Op::inputs; ++k) x[k] = L::load(inputs[k] + i);
       const auto ok = Op::run(x, conv, v, cls);
-      for (int j = 0; j < Op::outputs; ++j) L::store(out.values[j] + i, v[j]);
-      L::store_mask(out.decided + i, ok);
-      if (out.point_class) L::store_classes(out.point_class + i, cls);
+      SHADOWPROOF_UNROLL
+      for (int j = 0; j < Op::outputs; ++j) L::store(values[j] + i, v[j]);
+      L::store_mask(decided + i, ok);
+      if (classes) L::store_classes(classes + i, cls);
     }
-    for (; i < count; ++i) out.decided[i] = 0;
+    for (; i < count; ++i) decided[i] = 0;
   }
 }
 
@@ -153,9 +153,10 @@ batch_filter batch_filter_over(operation op, scalar_type type) {
     case operation::target_to:
       return nullptr;  // no batch filter: the kernel for one case, or the generic oracle, case by case
     case operation::ortho_size:
-      return f32 ? filter_all<size_op<ortho_form, float>, R> : filter_all<size_op<ortho_form, double>, R>;
+      return f32 ? filter_all<size_op<ortho_size_form, float>, R> : filter_all<size_op<ortho_size_form, double>, R>;
     case operation::perspective_size:
-      return f32 ? filter_all<size_op<frustum_form, float>, R> : filter_all<size_op<frustum_form, double>, R>;
+      return f32 ? filter_all<size_op<perspective_size_form, float>, R>
+                 : filter_all<size_op<perspective_size_form, double>, R>;
   }
   return nullptr;
 }

@@ -54,13 +54,34 @@ struct fraction_layout {
 /// output types, so it is its own correct rounding (no test needed).
 constexpr signed char exact_entry = -2;
 
+/// In Form::denominator_of: the entry is a quotient over denominator d whose numerator and
+/// denominator are, by the formula, exact values of the output type (2 over an input w, an
+/// input over an input). The filter over lanes divides once in that type, which IEEE
+/// arithmetic rounds correctly, and checks lane by lane that both are exact values of it and
+/// the quotient a normal number (rounding.h's round_direct_quotient); the kernel for one case
+/// takes it as a quotient over d.
+constexpr signed char direct_over(int d) { return static_cast<signed char>(16 + d); }
+/// The denominator of a denominator_of code (d for direct_over(d)), and whether it is direct.
+constexpr int denominator_index(signed char code) { return code >= 16 ? code - 16 : code; }
+constexpr bool is_direct(signed char code) { return code >= 16; }
+
 /// A layout with the form's denominators (Form::denominator_of, a constant array so that the
 /// filter over lanes picks each entry's rounding at compile time), nothing else set.
 template <class Form>
 fraction_layout layout_of() {
   fraction_layout l;
-  for (int j = 0; j < Form::entries; ++j) l.denominator[j] = Form::denominator_of[j];
+  for (int j = 0; j < Form::entries; ++j)
+    l.denominator[j] = static_cast<signed char>(denominator_index(Form::denominator_of[j]));
   return l;
+}
+
+/// Whether an entry of the form divides by denominator d other than directly: only those need
+/// d prepared (its reciprocal and the bound's).
+template <class Form>
+constexpr bool prepared_denominator(int d) {
+  for (int j = 0; j < Form::entries; ++j)
+    if (Form::denominator_of[j] == d) return true;
+  return false;
 }
 
 // ----------------------------------------------------------------------------------------------
@@ -99,16 +120,19 @@ auto kernel_inputs(const R* x) {
 
 /// Rounds entry J of a form over its denominator, chosen at compile time, into values[J], and
 /// narrows the mask ok to the lanes decided.
-template <class Form, int J, class N, class D, class R, class Mask>
-void round_entry(const N* num, const D* prepared_den, R* values, Mask& ok) {
-  constexpr int d = Form::denominator_of[J];
-  if constexpr (d == exact_entry) values[J] = select(first_of(num[J]) == R(0.0), R(0.0), first_of(num[J]));
+template <class Form, class F, int J, class N, class D, class R, class Mask>
+void round_entry(const N* num, const N* den, const D* prepared_den, R* values, Mask& ok) {
+  constexpr signed char code = Form::denominator_of[J];
+  constexpr int d = denominator_index(code);
+  if constexpr (code == exact_entry) values[J] = select(first_of(num[J]) == R(0.0), R(0.0), first_of(num[J]));
   else if constexpr (d < 0) ok = ok & round_value(num[J], values[J]);
+  else if constexpr (is_direct(code)) ok = ok & round_direct_quotient<F>(num[J], den[d], values[J]);
   else ok = ok & round_quotient(num[J], prepared_den[d], values[J]);
 }
-template <class Form, class N, class D, class R, class Mask, int... J>
-void round_entries(const N* num, const D* prepared_den, R* values, Mask& ok, std::integer_sequence<int, J...>) {
-  (round_entry<Form, J>(num, prepared_den, values, ok), ...);
+template <class Form, class F, class N, class D, class R, class Mask, int... J>
+void round_entries(const N* num, const N* den, const D* prepared_den, R* values, Mask& ok,
+                   std::integer_sequence<int, J...>) {
+  (round_entry<Form, F, J>(num, den, prepared_den, values, ok), ...);
 }
 
 /// The filter stage of a fraction form over a vector of cases (or one, R = double), without a
@@ -130,9 +154,9 @@ auto filter_lanes(R* x, const conventions& conv, R* values) {
   SHADOWPROOF_UNROLL
   for (int d = 0; d < Form::denominators; ++d) {
     ok = ok & nonzero(den[d]);
-    prepared_den[d] = prepare(den[d]);
+    if (prepared_denominator<Form>(d)) prepared_den[d] = prepare(den[d]);
   }
-  round_entries<Form>(num, prepared_den, values, ok, std::make_integer_sequence<int, Form::entries>());
+  round_entries<Form, F>(num, den, prepared_den, values, ok, std::make_integer_sequence<int, Form::entries>());
   return ok;
 }
 

@@ -37,6 +37,11 @@ inline double magnitude(double x) { return std::fabs(x); }
 inline double select(bool m, double a, double b) { return m ? a : b; }
 /// x rounded to float (to nearest, ties to even) and widened back: exact both ways.
 inline double round_to_float_value(double x) { return static_cast<double>(static_cast<float>(x)); }
+/// a / b in float arithmetic, widened back: the correctly rounded quotient where a and b are
+/// floats.
+inline double quotient_in_float(double a, double b) {
+  return static_cast<double>(static_cast<float>(a) / static_cast<float>(b));
+}
 /// The neighbours of a positive finite double: its bit pattern ± 1.
 inline void neighbours(double positive, double& above, double& below) {
   std::uint64_t bits;

@@ -17,9 +17,10 @@ struct perspective_form {
   static auto undefined_case(const R* x, const conventions&) {
     return (x[0] <= R(0.0)) | (x[1] <= R(0.0)) | (x[2] <= R(0.0)) | (x[3] <= R(0.0));
   }
-  // (0, 0) = c / aspect; (2, 2) and (2, 3) over f − n; (1, 1) = c itself.
+  // (0, 0) = c / aspect, a quotient of two inputs (one division in the output type over
+  // lanes); (2, 2) and (2, 3) over f − n; (1, 1) = c itself.
   static constexpr signed char E = exact_entry;  // zeros, ±1 and inputs
-  static constexpr signed char denominator_of[16] = {0, E, E, E, E, E, E, E, E, E, 1, 1, E, E, E, E};
+  static constexpr signed char denominator_of[16] = {direct_over(0), E, E, E, E, E, E, E, E, E, 1, 1, E, E, E, E};
   static fraction_layout layout(const conventions&) {
     fraction_layout l = layout_of<perspective_form>();
     l.on_zero[0] = zero_denominator::impossible;  // aspect > 0 here

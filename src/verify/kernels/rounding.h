@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <type_traits>
 
 #include "bounded.h"
 #include "lanes.h"
@@ -177,6 +178,36 @@ inline auto round_sum_to_double(R* t, R& out) {
   two_sum(t[n - 1], rest, hi, lo);
   const R E = mass * R((n - 1) * unit_roundoff * inflate);  // sums are exact near underflow
   return round_pair_to_double(hi, lo, E, out);
+}
+
+// ===========================================================================================
+// Quotients of two exact values of the output type
+
+/// num/den correctly rounded to F where num and den are exact values of F (a zero bound, and
+/// floats for F = float): one division in F, which IEEE arithmetic rounds correctly. Decided
+/// where both are such values and the quotient is a normal number of F, or num = 0 (then +0;
+/// den ≠ 0 is the caller's test); the rest (subnormal, overflowing, undefined) is left to the
+/// tests that decide them one case at a time.
+template <class F, class R>
+inline auto round_direct_quotient(const basic_bounded<R>& num, const basic_bounded<R>& den, R& out) {
+  static_assert(std::is_same_v<F, float>, "bounded numbers serve the f32 kernels");
+  const auto exact = (num.e == R(0.0)) & (den.e == R(0.0)) & (round_to_float_value(num.v) == num.v) &
+                     (round_to_float_value(den.v) == den.v);
+  const R q = quotient_in_float(num.v, den.v);
+  const auto normal = (magnitude(q) >= R(0x1p-126)) & (magnitude(q) <= R(0x1.fffffep127));
+  const auto zero = num.v == R(0.0);
+  out = select(zero, R(0.0), q);
+  return exact & (normal | zero);
+}
+template <class F, class R>
+inline auto round_direct_quotient(const basic_bounded_pair<R>& num, const basic_bounded_pair<R>& den, R& out) {
+  static_assert(std::is_same_v<F, double>, "bounded pairs serve the f64 kernels");
+  const auto exact = (num.e == R(0.0)) & (num.lo == R(0.0)) & (den.e == R(0.0)) & (den.lo == R(0.0));
+  const R q = num.hi / den.hi;
+  const auto normal = (magnitude(q) >= R(0x1p-1022)) & (magnitude(q) <= R(0x1.fffffffffffffp1023));
+  const auto zero = num.hi == R(0.0);
+  out = select(zero, R(0.0), q);
+  return exact & (normal | zero);
 }
 
 // ===========================================================================================
