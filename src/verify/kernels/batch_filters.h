@@ -112,6 +112,27 @@ template <class Op, class R>
     std::uint8_t* const decided = out.decided;
     std::int8_t* const classes = out.point_class;
     std::size_t i = 0;
+    // With many output columns, blocks of `group` vectors whose outputs are stored column by
+    // column, whole cache lines at a time: the columns of a batch of a power-of-two number of
+    // cases share cache sets, and storing each column's vector in turn evicts every line
+    // between its two halves.
+    constexpr std::size_t group = 8, block = group * L::width;
+    for (; Op::outputs >= 8 && i + block <= count; i += block) {
+      R v[group][Op::outputs];
+#pragma GCC unroll 1
+      for (std::size_t g = 0; g < group; ++g) {
+        const std::size_t at = i + g * L::width;
+        R x[Op::inputs], cls = R(0.0);
+        SHADOWPROOF_UNROLL
+        for (int k = 0; k < Op::inputs; ++k) x[k] = L::load(inputs[k] + at);
+        const auto ok = Op::run(x, conv, v[g], cls);
+        L::store_mask(decided + at, ok);
+        if (classes) L::store_classes(classes + at, cls);
+      }
+      for (int j = 0; j < Op::outputs; ++j)
+        SHADOWPROOF_UNROLL
+        for (std::size_t g = 0; g < group; ++g) L::store(values[j] + i + g * L::width, v[g][j]);
+    }
     for (; i + L::width <= count; i += L::width) {
       R x[Op::inputs], v[Op::outputs], cls = R(0.0);
       SHADOWPROOF_UNROLL
