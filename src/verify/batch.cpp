@@ -170,10 +170,12 @@ struct image_columns {
 void filter_images(const case_batch& b, const conventions& conv, const batch_references& refs, std::size_t first,
                    std::size_t end, bool use_avx2, image_columns& r) {
   const std::size_t count = b.count, n = end - first;
+  // The filter writes `decided` for every case and the rest wherever it decides G's class
+  // (the only cases whose other columns are read).
   r.plane_value.resize(n);
-  r.plane_value_decided.assign(n, 0.0);
-  r.reference_decided.assign(n, 0.0);
-  r.classes.assign(n, 0);
+  r.plane_value_decided.resize(n);
+  r.reference_decided.resize(n);
+  r.classes.resize(n);
   r.decided.assign(n, 0);
   // The filter reads the light as given and V as a point: any handedness or layout (a point has
   // no matrix to transpose).
