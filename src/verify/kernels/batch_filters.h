@@ -74,7 +74,7 @@ template <class F, bool placement>
 struct frame_op {
   static constexpr int inputs = 9, outputs = 16;
   template <class R>
-  static auto run(R* x, const conventions& conv, R* values, R&) {
+  [[gnu::flatten]] static auto run(R* x, const conventions& conv, R* values, R&) {
     const auto decided = look_at_filter::frame_lanes<F, placement, R>(x, conv, values);
     return conv.homogeneous ? no_lanes(x[0]) : decided;
   }
