@@ -307,7 +307,7 @@ template <class F, bool placement>
 bool look_at_kernel(const double* in, const conventions& conv, fast_reference& out) {
   refuse_grading_up_to_scale(conv, placement ? "target-to" : "look-at");
   double values[16];
-  if (!look_at_filter::frame_entries_of_case<F, placement>(in, conv, values)) return false;
+  if (!look_at_filter::frame_lanes<F, placement>(in, conv, values)) return false;
   out = fast_reference{};
   out.count = 16;
   for (int j = 0; j < 16; ++j) out.value[j] = values[j];

@@ -12,6 +12,9 @@
 // exact zero (its bound 0, not underflow_slack), so the zero entries of a frame with an
 // axis-aligned up stay exact and round to 0 without a bound to straddle it. √s by `root`
 // (its bound below), the quotient by the kernels' certified quotient rounding (rounding.h).
+// Where up is close to the view direction, X = up × w cancels and its bound no longer
+// decides: the lanes left open are evaluated once more in double-double with X as exact sums
+// (accurate_cross), for f32 cases too.
 #include <cmath>
 #include <type_traits>
 
@@ -146,6 +149,22 @@ void view_axis_and_up(const R* x, const conventions& conv, vector3<B>& W, vector
   }
 }
 
+/// num/den correctly rounded to F, in the lanes the bounds decide: the kernels' certified
+/// quotient rounding of the filter number's own type, or, for an f32 case evaluated in
+/// double-double (the second pass below), the pair quotient q1 + q2 within E (rounding.h)
+/// summed to y = fl(q1 + q2), within E + u |y| of num/den, and that interval's float rounding.
+template <class F, class N, class D, class R>
+auto round_entry(const N& num, const D& den, R& out) {
+  if constexpr (std::is_same_v<F, float> && std::is_same_v<N, basic_bounded_pair<R>>) {
+    R q1, q2, E;
+    pair_quotient(num, den, q1, q2, E);
+    const R y = q1 + q2;
+    return den.usable() & round_interval_to_float(y, (E + R(unit_roundoff) * magnitude(y)) * R(inflate), out);
+  } else {
+    return round_quotient(num, den, out);
+  }
+}
+
 /// The 16 canonical entries (row-major) of the view matrix (placement false) or of the
 /// placement (true) from the frame's W and X = up × W, in the lanes where every bound decides
 /// (the mask): rows (x, −x·eye), (y, −y·eye), (z, −z·eye), (0, 0, 0, 1) of the view matrix,
@@ -165,8 +184,8 @@ auto frame_entries(const R* x, const vector3<B>& W, const vector3<B>& X, R* valu
   for (int r = 0; r < 3; ++r) {
     const auto d = prepare(lengths[r]);
     SHADOWPROOF_UNROLL
-    for (int c = 0; c < 3; ++c) ok = ok & round_quotient(axes[r]->c[c], d, values[placement ? c * 4 + r : r * 4 + c]);
-    if constexpr (!placement) ok = ok & round_quotient(-dot(*axes[r], eye), d, values[r * 4 + 3]);
+    for (int c = 0; c < 3; ++c) ok = ok & round_entry<F>(axes[r]->c[c], d, values[placement ? c * 4 + r : r * 4 + c]);
+    if constexpr (!placement) ok = ok & round_entry<F>(-dot(*axes[r], eye), d, values[r * 4 + 3]);
   }
   if constexpr (placement) {
     // The eye itself, rounded to F (an f32 case's eye is a float: itself), +0 for 0.
@@ -182,20 +201,8 @@ auto frame_entries(const R* x, const vector3<B>& W, const vector3<B>& X, R* valu
   return ok;
 }
 
-/// The filter of look-at (placement false) or target-to (true) for inputs x = eye[3],
-/// target[3], up[3]: the 16 canonical entries in `values`, and the mask of the lanes where
-/// every one is decided (inputs in range, |X|² and |W|² certainly positive, every rounding
-/// certified).
-template <class F, bool placement, class R>
-auto frame_lanes(const R* x, const conventions& conv, R* values) {
-  using B = filter_number_of<F, R>;
-  vector3<B> W, up;
-  view_axis_and_up(x, conv, W, up);
-  return inputs_in_range<F>(x) & frame_entries<F, placement>(x, W, cross(up, W), values);
-}
-
 // ===========================================================================================
-// One f64 case again, where up × w cancels (up close to the view direction)
+// The lanes the first pass leaves open, where up × w cancels (up close to the view direction)
 
 /// Σ t[0..n) of n exact doubles as a pair within a bound: three sweeps of TwoSum along the
 /// terms (Ogita, Rump and Oishi's VecSum, each an error-free transformation: the exact sum
@@ -203,34 +210,41 @@ auto frame_lanes(const R* x, const conventions& conv, R* values) {
 /// u³ Σ|t|, in the others; then hi + lo = TwoSum(last, fl(Σ others)), within
 /// (n − 1) u Σ|others| (recursive summation, Higham §4.2) of the exact sum. All zero: an exact
 /// zero.
-template <int n>
-bounded_pair exact_sum(double* t) {
-  for (int sweep = 0; sweep < 3; ++sweep)
+template <int n, class R>
+basic_bounded_pair<R> exact_sum(R* t) {
+  SHADOWPROOF_UNROLL
+  for (int sweep = 0; sweep < 3; ++sweep) {
+    SHADOWPROOF_UNROLL
     for (int i = 1; i < n; ++i) {
-      double s, e;
+      R s, e;
       two_sum(t[i], t[i - 1], s, e);
       t[i] = s;
       t[i - 1] = e;
     }
-  double rest = t[0], mass = std::fabs(t[0]);
-  for (int i = 1; i < n - 1; ++i) {
-    rest += t[i];
-    mass += std::fabs(t[i]);
   }
-  bounded_pair r;
+  R rest = t[0], mass = magnitude(t[0]);
+  SHADOWPROOF_UNROLL
+  for (int i = 1; i < n - 1; ++i) {
+    rest = rest + t[i];
+    mass = mass + magnitude(t[i]);
+  }
+  basic_bounded_pair<R> r;
   two_sum(t[n - 1], rest, r.hi, r.lo);
-  r.e = mass * ((n - 1) * unit_roundoff * inflate);
+  r.e = mass * R((n - 1) * unit_roundoff * inflate);
   return r;
 }
 
 /// up × W with every component accurate to about 2^-106 of itself however much it cancels:
 /// a_i b_j − a_j b_i as the exact sum of eight TwoProducts (a = up is exact, b = W an exact
 /// pair: their bounds are 0).
-inline vector3<bounded_pair> accurate_cross(const vector3<bounded_pair>& a, const vector3<bounded_pair>& b) {
-  vector3<bounded_pair> r;
+template <class R>
+vector3<basic_bounded_pair<R>> accurate_cross(const vector3<basic_bounded_pair<R>>& a,
+                                              const vector3<basic_bounded_pair<R>>& b) {
+  vector3<basic_bounded_pair<R>> r;
+  SHADOWPROOF_UNROLL
   for (int c = 0; c < 3; ++c) {
     const int i = (c + 1) % 3, j = (c + 2) % 3;
-    double t[8];
+    R t[8];
     two_product(a.c[i].hi, b.c[j].hi, t[0], t[1]);
     two_product(a.c[i].hi, b.c[j].lo, t[2], t[3]);
     two_product(-a.c[j].hi, b.c[i].hi, t[4], t[5]);
@@ -240,21 +254,34 @@ inline vector3<bounded_pair> accurate_cross(const vector3<bounded_pair>& a, cons
   return r;
 }
 
-/// The 16 canonical entries of one case of look-at or target-to (F the case's type), or
-/// false where a bound does not decide or the inputs are out of range: the filter above, and
-/// for an f64 case it leaves open, once more with X = up × W accurate (near-degenerate frames:
-/// up close to the view direction).
-template <class F, bool placement>
-bool frame_entries_of_case(const double* x, const conventions& conv, double* values) {
-  if (frame_lanes<F, placement>(x, conv, values)) return true;
-  if constexpr (std::is_same_v<F, double>) {
-    if (!inputs_in_range<F>(x)) return false;
-    vector3<bounded_pair> W, up;
-    view_axis_and_up(x, conv, W, up);
-    return frame_entries<F, placement>(x, W, accurate_cross(up, W), values);
-  } else {
-    return false;
+// ===========================================================================================
+// The filter
+
+/// The filter of look-at (placement false) or target-to (true) for inputs x = eye[3],
+/// target[3], up[3]: the 16 canonical entries in `values`, and the mask of the lanes where
+/// every one is decided (inputs in range, |X|² and |W|² certainly positive, every rounding
+/// certified). Where a lane in range is left open (near up ∥ w the components of X cancel),
+/// the vector is evaluated once more in double-double, f32 cases too, with X accurate
+/// (accurate_cross): such near-degenerate frames are decided as well.
+template <class F, bool placement, class R>
+auto frame_lanes(const R* x, const conventions& conv, R* values) {
+  using B = filter_number_of<F, R>;
+  vector3<B> W, up;
+  view_axis_and_up(x, conv, W, up);
+  const auto in_range = inputs_in_range<F>(x);
+  auto ok = in_range & frame_entries<F, placement>(x, W, cross(up, W), values);
+  const auto open = in_range & !ok;
+  if (any_lane(open)) {
+    using P = basic_bounded_pair<R>;
+    vector3<P> W2, up2;
+    view_axis_and_up(x, conv, W2, up2);
+    R again[16];
+    const auto decided = open & frame_entries<F, placement>(x, W2, accurate_cross(up2, W2), again);
+    SHADOWPROOF_UNROLL
+    for (int j = 0; j < 16; ++j) values[j] = select(decided, again[j], values[j]);
+    ok = ok | decided;
   }
+  return ok;
 }
 
 }  // namespace look_at_filter
