@@ -2,8 +2,9 @@
 // The filter of look-at and target-to (constructions/look_at.h), written once over the real
 // type R (lanes.h): one case (R = double, the kernels of camera.cpp) or four (the AVX2 batch
 // filter), with the filter numbers of the output type (bounded for f32 cases, double-double
-// bounded_pair for f64 ones). No branch on the values: each step narrows a mask of the lanes
-// still decided, and a lane left undecided goes to the kernel for one case, then to the
+// bounded_pair for f64 ones). No branch on the values within a vector: each step narrows a
+// mask of the lanes still decided (the one branch, per vector, is whether any lane needs the
+// second pass below), and a lane left undecided goes to the kernel for one case, then to the
 // generic oracle.
 //
 // Every entry is q/√s. The frame W = ±(eye − target) (exact as a pair: TwoSum; in double
