@@ -30,8 +30,8 @@ struct batch_filter_out {
 using batch_filter = void (*)(const double* const* in, std::size_t count, const conventions& conv,
                               const batch_filter_out& out);
 
-/// The generic filter of (op, type), or null for an operation without one (the camera builders
-/// with irrational values: their cases go one by one).
+/// The generic filter of (op, type), or null for an operation without one (perspective-fov and
+/// perspective-fov-infinite: their cases go one by one).
 batch_filter generic_batch_filter(operation op, scalar_type type);
 
 /// The AVX2 filter of (op, type), or null when this build has none (not x86-64, or the

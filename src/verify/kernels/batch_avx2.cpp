@@ -49,6 +49,8 @@ inline v4d magnitude(v4d x) { return v4d(_mm256_andnot_pd(_mm256_set1_pd(-0.0), 
 inline v4d select(m4d m, v4d a, v4d b) { return v4d(_mm256_blendv_pd(b.v, a.v, m.v)); }
 inline m4d select(m4d m, m4d a, m4d b) { return {_mm256_blendv_pd(b.v, a.v, m.v)}; }
 inline m4d no_lanes(v4d) { return {_mm256_setzero_pd()}; }
+inline bool any_lane(m4d m) { return _mm256_movemask_pd(m.v) != 0; }
+inline v4d square_root(v4d x) { return v4d(_mm256_sqrt_pd(x.v)); }  // correctly rounded, as std::sqrt
 // Round to float (to nearest, ties to even: the MXCSR default) and widen back.
 inline v4d round_to_float_value(v4d x) { return v4d(_mm256_cvtps_pd(_mm256_cvtpd_ps(x.v))); }
 inline v4d quotient_in_float(v4d a, v4d b) {

@@ -7,6 +7,7 @@
 
 #include "batch.h"
 #include "frustum.h"
+#include "look_at.h"
 #include "normal_matrix.h"
 #include "ortho.h"
 #include "perspective.h"
@@ -53,6 +54,18 @@ struct shadow_point_op {
   template <class R>
   static auto run(R* x, const conventions& conv, R* values, R& cls) {
     return shadow_point_lanes<F, R>(x, conv, values, cls);
+  }
+};
+
+/// look-at (placement false) and target-to (true): the frame over lanes (look_at.h). Graded up
+/// to scale, no lane is decided: the kernel for one case refuses the convention.
+template <class F, bool placement>
+struct frame_op {
+  static constexpr int inputs = 9, outputs = 16;
+  template <class R>
+  [[gnu::flatten]] static auto run(R* x, const conventions& conv, R* values, R&) {
+    const auto decided = look_at_filter::frame_lanes<F, placement, R>(x, conv, values);
+    return conv.homogeneous ? no_lanes(x[0]) : decided;
   }
 };
 
@@ -170,9 +183,11 @@ batch_filter batch_filter_over(operation op, scalar_type type) {
       return f32 ? filter_all<fraction_op<perspective_form, float>, R> : filter_all<fraction_op<perspective_form, double>, R>;
     case operation::perspective_fov:
     case operation::perspective_fov_infinite:
-    case operation::look_at:
-    case operation::target_to:
       return nullptr;  // no batch filter: the kernel for one case, or the generic oracle, case by case
+    case operation::look_at:
+      return f32 ? filter_all<frame_op<float, false>, R> : filter_all<frame_op<double, false>, R>;
+    case operation::target_to:
+      return f32 ? filter_all<frame_op<float, true>, R> : filter_all<frame_op<double, true>, R>;
     case operation::ortho_size:
       return f32 ? filter_all<size_op<ortho_size_form, float>, R> : filter_all<size_op<ortho_size_form, double>, R>;
     case operation::perspective_size:

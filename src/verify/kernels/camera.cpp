@@ -27,11 +27,8 @@
 // errors are of a few 2^-106 (2^-53) relative: the ratio comes out within about 2^-101 of cot
 // in double-double (the test measures it on thousands of angles).
 //
-// q/√s (look-at, target-to: constructions/look_at.h). The frame W = ±(eye − target) (exact as
-// a pair: TwoSum), X = up × W, Y = W × X, the squared lengths and the translations, in filter
-// arithmetic; a product with an exact zero factor is an exact zero, so the zero entries of a
-// frame with an axis-aligned up stay exact. √s by `root` (its bound below), the quotient by
-// the kernels' certified quotient rounding (rounding.h).
+// q/√s (look-at, target-to: constructions/look_at.h): the filter of look_at.h, written once
+// for one case and for the batch's four, on one case.
 #include <mpfr.h>
 
 #include <array>
@@ -42,6 +39,7 @@
 #include "../operations/irrational_entries.h"
 #include "bounded.h"
 #include "cotangent.h"
+#include "look_at.h"
 #include "rounding.h"
 #include "view_volume.h"
 
@@ -303,169 +301,16 @@ bool perspective_fov_kernel(const double* in, const conventions& conv, fast_refe
 }
 
 // ===========================================================================================
-// The look-at kernels.
-
-// a − b for two inputs: exact as a pair; in double within u |a − b| (0 exactly when a = b).
-bounded_pair difference(double a, double b, const bounded_pair&) {
-  bounded_pair r;
-  two_sum(a, -b, r.hi, r.lo);
-  return r;
-}
-bounded difference(double a, double b, const bounded&) { return bounded(a) - bounded(b); }
-
-template <class B>
-[[gnu::always_inline]] inline std::array<B, 3> cross(const std::array<B, 3>& a, const std::array<B, 3>& b) {
-  return {product(a[1], b[2]) - product(a[2], b[1]), product(a[2], b[0]) - product(a[0], b[2]),
-          product(a[0], b[1]) - product(a[1], b[0])};
-}
-
-template <class B>
-[[gnu::always_inline]] inline B dot(const std::array<B, 3>& a, const std::array<B, 3>& b) {
-  return product(a[0], b[0]) + product(a[1], b[1]) + product(a[2], b[2]);
-}
-
-// √S for every S within s ± s.e, when that range is positive (false otherwise).
-//  double: r = fl(√s), |√s − r| ≤ u r; |√S − √s| = |S − s|/(√S + √s) ≤ e/(2L) for any
-//  L ≤ √(s − e) (both roots are at least L).
-//  double-double: r1 = fl(√hi), D = s − r1² = (hi − p) − p' + lo with r1² = p + p' exactly
-//  (TwoProduct; hi − p exact by Sterbenz), d = D rounded twice, |D − d| ≤ u (|t1| + |d|);
-//  r2 = fl(d/(2 r1)). Since √s = r1 + D/(√s + r1),
-//    |√s − r1 − D/(2 r1)| = D² / ((√s + r1)² 2 r1) ≤ (|D|/L)² / (8 L)   (L ≤ √s, L ≤ r1),
-//  then |D − d|/(2 r1) and |r2 − d/(2 r1)| ≤ u |r2|, and e/(2L) for the range of S. The bound's
-//  own dozen roundings on non-negative terms are covered by (1 + 2^-45).
-bool root(const bounded& s, bounded& r) {
-  const double lower = (s.v - s.e * inflate) * (1 - 0x1p-50);
-  if (!(lower > 0)) return false;
-  const double L = std::sqrt(lower) * (1 - 0x1p-50);
-  r.v = std::sqrt(s.v);
-  r.e = (s.e * inflate / (2 * L) + unit_roundoff * r.v) * (1 + 0x1p-45);
-  return true;
-}
-bool root(const bounded_pair& s, bounded_pair& r) {
-  const double lower = (s.hi - std::fabs(s.lo) - s.e * inflate) * (1 - 0x1p-50);
-  if (!(lower > 0)) return false;
-  const double r1 = std::sqrt(s.hi);
-  const double L = std::min(std::sqrt(lower), r1) * (1 - 0x1p-50);
-  double p, p_low;
-  two_product(r1, r1, p, p_low);
-  const double t1 = (s.hi - p) - p_low;
-  const double d = t1 + s.lo;
-  const double d_error = unit_roundoff * (std::fabs(t1) + std::fabs(d));
-  const double r2 = d / (2 * r1);
-  const double q = (std::fabs(d) + d_error) / L;
-  two_sum(r1, r2, r.hi, r.lo);
-  r.e = (s.e * inflate / (2 * L) + q * q / (8 * L) + d_error / (2 * r1) + unit_roundoff * std::fabs(r2)) *
-            (1 + 0x1p-45) +
-        underflow_slack;
-  return true;
-}
-
-// The range of the inputs, 0 or a magnitude within [2^-60, 2^60] (f32) or [2^-100, 2^100]
-// (f64): every product of up to six of them and of their differences stays far above underflow
-// and below overflow in the filter arithmetic.
-template <class F>
-bool frame_inputs_in_range(const double* in) {
-  constexpr double smallest = std::is_same_v<F, float> ? 0x1p-60 : 0x1p-100;
-  constexpr double largest = std::is_same_v<F, float> ? 0x1p60 : 0x1p100;
-  for (int i = 0; i < 9; ++i)
-    if (in[i] != 0 && !moderate(in[i], smallest, largest)) return false;
-  return true;
-}
-
-// Σ t[0..n) of n exact doubles as a pair within a bound: three sweeps of TwoSum along the terms
-// (Ogita, Rump and Oishi's VecSum, each an error-free transformation: the exact sum does not
-// change) leave the recursive sum in the last term and its errors, of the order u³ Σ|t|, in
-// the others; then hi + lo = TwoSum(last, fl(Σ others)), within (n − 1) u Σ|others| (recursive
-// summation, Higham §4.2) of the exact sum. All zero: an exact zero.
-template <int n>
-bounded_pair exact_sum(double* t) {
-  for (int sweep = 0; sweep < 3; ++sweep)
-    for (int i = 1; i < n; ++i) {
-      double s, e;
-      two_sum(t[i], t[i - 1], s, e);
-      t[i] = s;
-      t[i - 1] = e;
-    }
-  double rest = t[0], mass = std::fabs(t[0]);
-  for (int i = 1; i < n - 1; ++i) {
-    rest += t[i];
-    mass += std::fabs(t[i]);
-  }
-  bounded_pair r;
-  two_sum(t[n - 1], rest, r.hi, r.lo);
-  r.e = mass * ((n - 1) * unit_roundoff * inflate);
-  return r;
-}
-
-// up × W with every component accurate to about 2^-106 of itself however much it cancels (up
-// near the view direction): a_i b_j − a_j b_i as the exact sum of eight TwoProducts (a = up is
-// exact, b = W an exact pair: their bounds are 0).
-std::array<bounded_pair, 3> accurate_cross(const std::array<bounded_pair, 3>& a, const std::array<bounded_pair, 3>& b) {
-  std::array<bounded_pair, 3> r;
-  for (int c = 0; c < 3; ++c) {
-    const int i = (c + 1) % 3, j = (c + 2) % 3;
-    double t[8];
-    two_product(a[i].hi, b[j].hi, t[0], t[1]);
-    two_product(a[i].hi, b[j].lo, t[2], t[3]);
-    two_product(-a[j].hi, b[i].hi, t[4], t[5]);
-    two_product(-a[j].hi, b[i].lo, t[6], t[7]);
-    r[c] = exact_sum<8>(t);
-  }
-  return r;
-}
-
-// The entries of the view matrix (m, row-major, rows 0 to 2; the translations only when
-// `translations`) from the frame's W and X; false where a bound does not decide.
-template <class B>
-bool frame_entries(const std::array<B, 3>& W, const std::array<B, 3>& X, const std::array<B, 3>& at,
-                   bool translations, double* m) {
-  const std::array<B, 3> Y = cross(W, X);
-  const B ww = dot(W, W), xx = dot(X, X);
-  // |W|² and |X|² certainly positive (otherwise rows or columns are undefined, or it is not
-  // decided: the generic oracle says which).
-  B lengths[3];
-  if (!root(xx, lengths[0]) || !root(product(ww, xx), lengths[1]) || !root(ww, lengths[2])) return false;
-  const std::array<B, 3>* axes[3] = {&X, &Y, &W};
-  for (int r = 0; r < 3; ++r) {
-    const auto d = prepare(lengths[r]);
-    for (int c = 0; c < (translations ? 4 : 3); ++c) {
-      const B q = c < 3 ? (*axes[r])[c] : -dot(*axes[r], at);
-      if (!round_quotient(q, d, m[r * 4 + c])) return false;
-    }
-  }
-  return true;
-}
+// The look-at kernels: the filter of look_at.h on one case.
 
 template <class F, bool placement>
 bool look_at_kernel(const double* in, const conventions& conv, fast_reference& out) {
   refuse_grading_up_to_scale(conv, placement ? "target-to" : "look-at");
-  using B = filter_number<F>;
-  if (!frame_inputs_in_range<F>(in)) return false;
-  const double* eye = in;
-  const double* target = in + 3;
-  const bool right = conv.hand == handedness::right;
-  std::array<B, 3> W, up, at;
-  for (int i = 0; i < 3; ++i) {
-    W[i] = right ? difference(eye[i], target[i], B()) : difference(target[i], eye[i], B());
-    up[i] = B(in[6 + i]);
-    at[i] = B(eye[i]);
-  }
-  double m[16];
-  if (!frame_entries(W, cross(up, W), at, !placement, m)) {
-    // Near up ∥ w the components of X cancel: in double-double, once more with them accurate.
-    if constexpr (std::is_same_v<B, bounded_pair>) {
-      if (!frame_entries(W, accurate_cross(up, W), at, !placement, m)) return false;
-    } else {
-      return false;
-    }
-  }
+  double values[16];
+  if (!look_at_filter::frame_lanes<F, placement>(in, conv, values)) return false;
   out = fast_reference{};
   out.count = 16;
-  for (int r = 0; r < 3; ++r) {
-    for (int c = 0; c < 3; ++c) out.value[r * 4 + c] = placement ? m[c * 4 + r] : m[r * 4 + c];
-    out.value[r * 4 + 3] = placement ? rounded<F>(eye[r]) : m[r * 4 + 3];
-  }
-  out.value[15] = 1;
+  for (int j = 0; j < 16; ++j) out.value[j] = values[j];
   return true;
 }
 

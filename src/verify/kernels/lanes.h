@@ -52,6 +52,10 @@ inline void neighbours(double positive, double& above, double& below) {
 }
 /// A mask false in every lane, of the mask type of x's real type.
 inline bool no_lanes(double) { return false; }
+/// Whether the mask is true in any lane.
+inline bool any_lane(bool m) { return m; }
+/// √x correctly rounded (IEEE 754), lane by lane; NaN for x < 0.
+inline double square_root(double x) { return std::sqrt(x); }
 
 }  // namespace SHADOWPROOF_KERNEL_TARGET
 }  // namespace shadowproof::detail
