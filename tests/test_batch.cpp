@@ -31,13 +31,14 @@ std::vector<double> outputs_of(const case_batch& b, std::size_t i) {
 }
 
 // The operations with batch filters and kernels (right-handed: a left-handed convention goes to
-// the generic oracle); the camera builders with irrational entries have none.
+// the kernel for one case or the generic oracle); look-at and target-to have none.
 bool has_batch_filter(const implementation& impl) {
   const operation op = impl.op;
   return impl.conv.hand == handedness::right &&
          (op == operation::shadow_matrix || op == operation::shadow_point || op == operation::reflection_matrix ||
           op == operation::ortho || op == operation::frustum || op == operation::normal_matrix ||
-          op == operation::perspective || op == operation::ortho_size || op == operation::perspective_size);
+          op == operation::perspective || op == operation::ortho_size || op == operation::perspective_size ||
+          op == operation::perspective_fov || op == operation::perspective_fov_infinite);
 }
 
 // Field for field: the batch's columns for case i against grade_case's grade of it.
@@ -88,7 +89,7 @@ void perturb(case_batch& b, std::uint64_t seed) {
 TEST_CASE("batch grades are grade_case's, field for field, for every built-in implementation", "[batch]") {
   // With the AVX2 filter and column grader where the processor has them, and with the generic ones.
   // 48 cases (every input class, full AVX2 blocks and a tail) where a batch filter decides, 12
-  // where every case goes to the one-case oracle anyway (irrational entries).
+  // where every case goes to the one-case oracle anyway (look-at, target-to).
   std::size_t graded = 0, expected = 0;
   for (const implementation& impl : builtin_implementations()) {
     const std::size_t count = has_batch_filter(impl) ? 48 : 12;
