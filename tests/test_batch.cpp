@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "../src/verify/kernels/batch.h"
+#include "../src/verify/oracle_fast.h"
 #include "shadowproof/impls/builtin.h"
 #include "shadowproof/verify/batch.h"
 #include "shadowproof/verify/cases.h"
@@ -254,4 +255,75 @@ TEST_CASE("left-handed projections: batch references are the all-rational oracle
         REQUIRE(g.max_ulps == 0);
       }
     }
+}
+
+TEST_CASE("the field-of-view filters decide the angles at the edges of their ranges as the kernels for one case", "[batch]") {
+  // Angles at every threshold of the cotangent's evaluation (the smallest angle it takes, the
+  // switch to π/2 − x, π and 180° and their neighbours, values outside the half turn) and
+  // aspects at the edges of their range, every combination, in both units and both types:
+  // the generic filter, the AVX2 filter and the kernel for one case must decide the same
+  // lanes (the filters decide no lane the kernel declines) with the same bits.
+  const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
+  const double pi_below = 0x1.921fb54442d18p+1;  // the double nearest π, below it
+  const std::vector<double> radians = {0x1p-400, std::nextafter(0x1p-400, 0.0), 1e-300, 1e-5, 0.5, 1.6,
+                                       std::nextafter(1.6, 2.0), std::nextafter(1.6, 0.0), 1.5707963267948966,
+                                       3.0, pi_below, std::nextafter(pi_below, 4.0), 0.0, -1.0, nan, inf};
+  const std::vector<double> degrees = {0x1p-390, std::nextafter(0x1p-390, 0.0), 1e-100, 1.0, 45.0, 90.0,
+                                       std::nextafter(90.0, 100.0), std::nextafter(90.0, 0.0), 120.0,
+                                       std::nextafter(180.0, 0.0), 180.0, 200.0, 0.0, -45.0, nan, inf};
+  const std::vector<double> aspects = {1.0, 0.75, 0x1p-300, std::nextafter(0x1p-300, 0.0), 0x1p300,
+                                       std::nextafter(0x1p300, inf), 0.0, -1.0};
+  std::size_t decided_by_filter = 0, lanes = 0;
+  for (const operation op : {operation::perspective_fov, operation::perspective_fov_infinite})
+    for (const scalar_type type : {scalar_type::f32, scalar_type::f64})
+      for (const angle_unit unit : {angle_unit::radians, angle_unit::degrees}) {
+        conventions conv;
+        conv.angle = unit;
+        std::vector<double> columns[4];
+        for (const double fovy : unit == angle_unit::radians ? radians : degrees)
+          for (const double aspect : aspects) {
+            columns[0].push_back(fovy);
+            columns[1].push_back(aspect);
+            columns[2].push_back(0.5);
+            columns[3].push_back(100.0);
+          }
+        const std::size_t count = columns[0].size();  // a multiple of 4: no tail
+        const double* in[4] = {columns[0].data(), columns[1].data(), columns[2].data(), columns[3].data()};
+        auto run = [&](detail::batch_filter filter, std::vector<double>& values, std::vector<std::uint8_t>& decided) {
+          values.assign(16 * count, 0.0);
+          decided.assign(count, 0);
+          double* out[16];
+          for (std::size_t j = 0; j < 16; ++j) out[j] = values.data() + j * count;
+          filter(in, count, conv, {out, decided.data(), nullptr});
+        };
+        std::vector<double> generic, avx2;
+        std::vector<std::uint8_t> generic_decided, avx2_decided;
+        run(detail::generic_batch_filter(op, type), generic, generic_decided);
+        const bool with_avx2 = avx2_batch_available();
+        if (with_avx2) run(detail::avx2_batch_filter(op, type), avx2, avx2_decided);
+        const bool infinite = op == operation::perspective_fov_infinite;
+        const detail::fast_kernel kernel =
+            type == scalar_type::f32 ? (infinite ? detail::fast_perspective_fov_infinite_f32 : detail::fast_perspective_fov_f32)
+                                     : (infinite ? detail::fast_perspective_fov_infinite_f64 : detail::fast_perspective_fov_f64);
+        for (std::size_t i = 0; i < count; ++i) {
+          INFO(to_string(op) << " " << to_string(type) << " fovy " << columns[0][i] << " aspect " << columns[1][i]);
+          const double x[4] = {columns[0][i], columns[1][i], columns[2][i], columns[3][i]};
+          detail::fast_reference r;
+          const bool by_kernel = kernel(x, conv, r);
+          if (with_avx2) REQUIRE(generic_decided[i] == avx2_decided[i]);
+          if (!generic_decided[i]) continue;
+          REQUIRE(by_kernel);
+          REQUIRE(r.defined);
+          for (std::size_t j = 0; j < 16; ++j) {
+            REQUIRE(same_bits(generic[j * count + i], r.value[j]));
+            if (with_avx2) REQUIRE(same_bits(avx2[j * count + i], r.value[j]));
+          }
+          ++decided_by_filter;
+        }
+        lanes += count;
+      }
+  // In range: 10 of 16 angles times 4 of 8 aspects, 320 of the 1024 lanes; the filters leave
+  // a few of them (a focal scale beyond double's range) to the kernel.
+  CHECK(lanes == 1024);
+  CHECK(decided_by_filter >= 256);
 }
