@@ -125,12 +125,17 @@ inline B product(const B& a, const B& b) {
 
 /// Terms of the Taylor sums of sin r and cos r, |r| ≤ 1/128 + 2^-60: sin to r^(2K+1), cos to
 /// r^(2K'). Double-double: K = K' = 5, truncation below 2^-116 of sin r and 2^-112 of cos r;
-/// double: K = 2, K' = 3, below 2^-54 and 2^-70.
+/// double: K = 2, K' = 3, below 2^-54 and 2^-70. In double-double, the Horner steps from
+/// s_3 up for sin r / r (|s_3| ≤ 1/7!) and from s_4 up for cos r (|s_4| ≤ 1/8!) are taken in
+/// double: their rounding errors reach the sums below 2^-53 · 2^-12.3 · 2^-42 = 2^-107 and
+/// 2^-53 · 2^-15.3 · 2^-56, beside the 2^-106 of each double-double step.
 template <class B>
 struct taylor_terms {
   static constexpr bool pair = std::is_same_v<B, basic_bounded_pair<decltype(first_of(B()))>>;
   static constexpr int sine = pair ? 5 : 2;
   static constexpr int cosine = pair ? 5 : 3;
+  static constexpr int sine_in_double = pair ? 3 : 0;
+  static constexpr int cosine_in_double = pair ? 4 : 0;
 };
 
 /// An upper bound on t^n/n! for 0 ≤ t ≤ t_up: n + 1 roundings to nearest, each within a factor
@@ -144,14 +149,37 @@ inline R truncation_bound(const trig_table& k, R t_up) {
   return p * R(1 + 0x1p-40) + R(underflow_slack);
 }
 
-/// Σ_{k=0..K} (−1)^k y^k c[2k + offset] by Horner's rule (y = r², offset 1: sin r / r; 0: cos r).
-template <int terms, int offset, class B>
+/// The filter number in double standing for a double-double one (hi alone, |lo| in the bound),
+/// and back.
+template <class R>
+inline basic_bounded<R> in_double(const basic_bounded<R>& a) { return a; }
+template <class R>
+inline basic_bounded<R> in_double(const basic_bounded_pair<R>& a) { return {a.hi, magnitude(a.lo) + a.e}; }
+template <class R>
+inline void set_from_double(const basic_bounded<R>& a, basic_bounded<R>& out) { out = a; }
+template <class R>
+inline void set_from_double(const basic_bounded<R>& a, basic_bounded_pair<R>& out) { out = {a.v, R(0.0), a.e}; }
+
+/// Σ_{k=0..K} (−1)^k y^k c[2k + offset] by Horner's rule (y = r², offset 1: sin r / r; 0: cos r):
+/// s_K = ±c[2K + offset], s_i = s_{i+1} y + (−1)^i c[2i + offset], the sum s_0. The steps
+/// i ≥ `in_double` are taken in double whatever B (their rounding errors, about 2^-53 |s_i|,
+/// reach the sum multiplied by y^i ≤ 2^-14i), the others in B.
+template <int terms, int offset, int in_double_from, class B>
 inline B alternating_series(const trig_table& k, const B& y) {
+  using D = decltype(in_double(y));
   const auto& f = k.inverse_factorial;
-  B s = constant_of<B>(f[2 * terms + offset]);
-  if (terms % 2) s = -s;
+  const D y_double = in_double(y);
+  D head = constant_of<D>(f[2 * terms + offset]);
+  if (terms % 2) head = -head;
   SHADOWPROOF_UNROLL
-  for (int i = terms - 1; i >= 0; --i) {
+  for (int i = terms - 1; i >= in_double_from; --i) {
+    const D c = constant_of<D>(f[2 * i + offset]);
+    head = head * y_double + (i % 2 ? -c : c);
+  }
+  B s;
+  set_from_double(head, s);
+  SHADOWPROOF_UNROLL
+  for (int i = in_double_from - 1; i >= 0; --i) {
     const B c = constant_of<B>(f[2 * i + offset]);
     s = s * y + (i % 2 ? -c : c);
   }
@@ -171,9 +199,10 @@ inline void sine_cosine(const trig_table& k, const B& t, B& sine, B& cosine) {
   const B r = point_of(reduced);
   const B y = r * r;
   const R r_up = upper_magnitude(r), e_t = bound_of(t) + bound_of(reduced);
-  constexpr int K = taylor_terms<B>::sine, K2 = taylor_terms<B>::cosine;
-  const B sin_r = widened(r * alternating_series<K, 1>(k, y), truncation_bound<2 * K + 3>(k, r_up));
-  const B cos_r = widened(alternating_series<K2, 0>(k, y), truncation_bound<2 * K2 + 2>(k, r_up));
+  using terms = taylor_terms<B>;
+  constexpr int K = terms::sine, K2 = terms::cosine;
+  const B sin_r = widened(r * alternating_series<K, 1, terms::sine_in_double>(k, y), truncation_bound<2 * K + 3>(k, r_up));
+  const B cos_r = widened(alternating_series<K2, 0, terms::cosine_in_double>(k, y), truncation_bound<2 * K2 + 2>(k, r_up));
   B sin_a, cos_a;
   set_entry(k.sine_hi, k.sine_lo, k.sine_e, k.sine_bound, j, sin_a);
   set_entry(k.cosine_hi, k.cosine_lo, k.cosine_e, k.cosine_bound, j, cos_a);
