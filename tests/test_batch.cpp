@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "../src/verify/kernels/batch.h"
+#include "../src/verify/oracle_fast.h"
 #include "shadowproof/impls/builtin.h"
 #include "shadowproof/verify/batch.h"
 #include "shadowproof/verify/cases.h"
@@ -31,20 +32,27 @@ std::vector<double> outputs_of(const case_batch& b, std::size_t i) {
 }
 
 // The operations with batch filters and kernels (right-handed: a left-handed convention goes to
-// the kernel for one case); the field-of-view builders have none.
+// the kernel for one case or the generic oracle).
 bool has_batch_filter(const implementation& impl) {
   const operation op = impl.op;
   return impl.conv.hand == handedness::right &&
          (op == operation::shadow_matrix || op == operation::shadow_point || op == operation::reflection_matrix ||
           op == operation::ortho || op == operation::frustum || op == operation::normal_matrix ||
           op == operation::perspective || op == operation::ortho_size || op == operation::perspective_size ||
-          op == operation::look_at || op == operation::target_to);
+          op == operation::look_at || op == operation::target_to || op == operation::perspective_fov ||
+          op == operation::perspective_fov_infinite);
 }
 
 // look-at or target-to: slow to grade where the filter does not decide (degenerate frames go
 // to rationals), so their tests take fewer cases.
 bool frame_builder(const implementation& impl) {
   return impl.op == operation::look_at || impl.op == operation::target_to;
+}
+
+// perspective-fov or perspective-fov-infinite: fifteen implementations, many of them with the
+// same conventions, and verdicts slow to grade: fewer cases.
+bool field_of_view_builder(const implementation& impl) {
+  return impl.op == operation::perspective_fov || impl.op == operation::perspective_fov_infinite;
 }
 
 // Whether impl is the first right-handed look-at (target-to) implementation of its type met:
@@ -103,11 +111,13 @@ void perturb(case_batch& b, std::uint64_t seed) {
 TEST_CASE("batch grades are grade_case's, field for field, for every built-in implementation", "[batch]") {
   // With the AVX2 filter and column grader where the processor has them, and with the generic ones.
   // 48 cases (every input class, full AVX2 blocks and a tail) where a batch filter decides, 10
-  // for the look-at builders (two blocks and a tail: their verdicts are slow), 12 where every
-  // case goes to the one-case oracle anyway (the field-of-view builders).
+  // for the look-at builders (two blocks and a tail: their verdicts are slow), 14 for the
+  // field-of-view builders (three blocks and a tail), 12 for a left-handed convention (the
+  // one-case oracle).
   std::size_t graded = 0, expected = 0;
   for (const implementation& impl : builtin_implementations()) {
-    const std::size_t count = has_batch_filter(impl) ? (frame_builder(impl) ? 10 : 48) : 12;
+    const std::size_t count =
+        has_batch_filter(impl) ? (frame_builder(impl) ? 10 : field_of_view_builder(impl) ? 14 : 48) : 12;
     expected += count;
     const auto cases = generate_cases(impl.op, impl.type, count, 31, std::nullopt, impl.conv);
     case_batch batch = make_batch(cases);
@@ -192,12 +202,14 @@ TEST_CASE("the AVX2 filter and the generic filter give the same references bit f
   for (const implementation& impl : builtin_implementations()) {
     if (!has_batch_filter(impl)) continue;
     // The look-at builders: one implementation of each type, 43 regular and near-degenerate
-    // cases (their degenerate frames go to rationals, one by one on both paths).
+    // cases (their degenerate frames go to rationals, one by one on both paths); the
+    // field-of-view builders 43 cases of every class; the others 203 (a tail of 3).
     const bool frame = frame_builder(impl);
     if (frame && !first_frame_builder_of_its_type(impl)) continue;
     for (input_class cls : {input_class::regular, input_class::near_degenerate, input_class::degenerate}) {
       if (frame && cls == input_class::degenerate) continue;
-      const auto cases = generate_cases(impl.op, impl.type, frame ? 43 : 203, 17, cls, impl.conv);  // a tail of 3
+      const auto cases =
+          generate_cases(impl.op, impl.type, frame || field_of_view_builder(impl) ? 43 : 203, 17, cls, impl.conv);
       const case_batch batch = make_batch(cases);
       batch_references generic, avx2;
       compute_references(batch, impl.conv, generic, nullptr, batch_path::generic);
@@ -340,4 +352,75 @@ TEST_CASE("quotients of two exact values: batch references at the ends of the ra
   // Both sides of the limits: the filter decides the regular ones and leaves the others.
   CHECK(filtered * 4 > compared);
   CHECK(filtered * 4 < compared * 3);
+}
+
+TEST_CASE("the field-of-view filters decide the angles at the edges of their ranges as the kernels for one case", "[batch]") {
+  // Angles at every threshold of the cotangent's evaluation (the smallest angle it takes, the
+  // switch to π/2 − x, π and 180° and their neighbours, values outside the half turn) and
+  // aspects at the edges of their range, every combination, in both units and both types:
+  // the generic filter, the AVX2 filter and the kernel for one case must decide the same
+  // lanes (the filters decide no lane the kernel declines) with the same bits.
+  const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
+  const double pi_below = 0x1.921fb54442d18p+1;  // the double nearest π, below it
+  const std::vector<double> radians = {0x1p-400, std::nextafter(0x1p-400, 0.0), 1e-300, 1e-5, 0.5, 1.6,
+                                       std::nextafter(1.6, 2.0), std::nextafter(1.6, 0.0), 1.5707963267948966,
+                                       3.0, pi_below, std::nextafter(pi_below, 4.0), 0.0, -1.0, nan, inf};
+  const std::vector<double> degrees = {0x1p-390, std::nextafter(0x1p-390, 0.0), 1e-100, 1.0, 45.0, 90.0,
+                                       std::nextafter(90.0, 100.0), std::nextafter(90.0, 0.0), 120.0,
+                                       std::nextafter(180.0, 0.0), 180.0, 200.0, 0.0, -45.0, nan, inf};
+  const std::vector<double> aspects = {1.0, 0.75, 0x1p-300, std::nextafter(0x1p-300, 0.0), 0x1p300,
+                                       std::nextafter(0x1p300, inf), 0.0, -1.0};
+  std::size_t decided_by_filter = 0, lanes = 0;
+  for (const operation op : {operation::perspective_fov, operation::perspective_fov_infinite})
+    for (const scalar_type type : {scalar_type::f32, scalar_type::f64})
+      for (const angle_unit unit : {angle_unit::radians, angle_unit::degrees}) {
+        conventions conv;
+        conv.angle = unit;
+        std::vector<double> columns[4];
+        for (const double fovy : unit == angle_unit::radians ? radians : degrees)
+          for (const double aspect : aspects) {
+            columns[0].push_back(fovy);
+            columns[1].push_back(aspect);
+            columns[2].push_back(0.5);
+            columns[3].push_back(100.0);
+          }
+        const std::size_t count = columns[0].size();  // a multiple of 4: no tail
+        const double* in[4] = {columns[0].data(), columns[1].data(), columns[2].data(), columns[3].data()};
+        auto run = [&](detail::batch_filter filter, std::vector<double>& values, std::vector<std::uint8_t>& decided) {
+          values.assign(16 * count, 0.0);
+          decided.assign(count, 0);
+          double* out[16];
+          for (std::size_t j = 0; j < 16; ++j) out[j] = values.data() + j * count;
+          filter(in, count, conv, {out, decided.data(), nullptr});
+        };
+        std::vector<double> generic, avx2;
+        std::vector<std::uint8_t> generic_decided, avx2_decided;
+        run(detail::generic_batch_filter(op, type), generic, generic_decided);
+        const bool with_avx2 = avx2_batch_available();
+        if (with_avx2) run(detail::avx2_batch_filter(op, type), avx2, avx2_decided);
+        const bool infinite = op == operation::perspective_fov_infinite;
+        const detail::fast_kernel kernel =
+            type == scalar_type::f32 ? (infinite ? detail::fast_perspective_fov_infinite_f32 : detail::fast_perspective_fov_f32)
+                                     : (infinite ? detail::fast_perspective_fov_infinite_f64 : detail::fast_perspective_fov_f64);
+        for (std::size_t i = 0; i < count; ++i) {
+          INFO(to_string(op) << " " << to_string(type) << " fovy " << columns[0][i] << " aspect " << columns[1][i]);
+          const double x[4] = {columns[0][i], columns[1][i], columns[2][i], columns[3][i]};
+          detail::fast_reference r;
+          const bool by_kernel = kernel(x, conv, r);
+          if (with_avx2) REQUIRE(generic_decided[i] == avx2_decided[i]);
+          if (!generic_decided[i]) continue;
+          REQUIRE(by_kernel);
+          REQUIRE(r.defined);
+          for (std::size_t j = 0; j < 16; ++j) {
+            REQUIRE(same_bits(generic[j * count + i], r.value[j]));
+            if (with_avx2) REQUIRE(same_bits(avx2[j * count + i], r.value[j]));
+          }
+          ++decided_by_filter;
+        }
+        lanes += count;
+      }
+  // In range: 10 of 16 angles times 4 of 8 aspects, 320 of the 1024 lanes; the filters leave
+  // a few of them (a focal scale beyond double's range) to the kernel.
+  CHECK(lanes == 1024);
+  CHECK(decided_by_filter >= 256);
 }

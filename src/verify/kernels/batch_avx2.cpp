@@ -61,6 +61,10 @@ inline void neighbours(v4d positive, v4d& above, v4d& below) {
   above = v4d(_mm256_castsi256_pd(_mm256_add_epi64(bits, one)));
   below = v4d(_mm256_castsi256_pd(_mm256_sub_epi64(bits, one)));
 }
+// table[index] in each lane, index an integer in the table's range.
+inline v4d gather(const double* table, v4d index) {
+  return v4d(_mm256_i32gather_pd(table, _mm256_cvtpd_epi32(index.v), 8));
+}
 // TwoProduct by the fused multiply-add: e = fma(a, b, −p) exactly.
 inline void two_product(v4d a, v4d b, v4d& p, v4d& e) {
   p = a * b;

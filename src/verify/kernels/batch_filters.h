@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "batch.h"
+#include "field_of_view.h"
 #include "frustum.h"
 #include "look_at.h"
 #include "normal_matrix.h"
@@ -182,8 +183,11 @@ batch_filter batch_filter_over(operation op, scalar_type type) {
     case operation::perspective:
       return f32 ? filter_all<fraction_op<perspective_form, float>, R> : filter_all<fraction_op<perspective_form, double>, R>;
     case operation::perspective_fov:
+      return f32 ? filter_all<field_of_view_lanes::field_of_view_op<float, false>, R>
+                 : filter_all<field_of_view_lanes::field_of_view_op<double, false>, R>;
     case operation::perspective_fov_infinite:
-      return nullptr;  // no batch filter: the kernel for one case, or the generic oracle, case by case
+      return f32 ? filter_all<field_of_view_lanes::field_of_view_op<float, true>, R>
+                 : filter_all<field_of_view_lanes::field_of_view_op<double, true>, R>;
     case operation::look_at:
       return f32 ? filter_all<frame_op<float, false>, R> : filter_all<frame_op<double, false>, R>;
     case operation::target_to:

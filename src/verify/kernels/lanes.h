@@ -50,6 +50,8 @@ inline void neighbours(double positive, double& above, double& below) {
   std::memcpy(&above, &up, sizeof above);
   std::memcpy(&below, &down, sizeof below);
 }
+/// table[index], index an integer in the table's range held as a double (a gather in a vector).
+inline double gather(const double* table, double index) { return table[static_cast<int>(index)]; }
 /// A mask false in every lane, of the mask type of x's real type.
 inline bool no_lanes(double) { return false; }
 /// Whether the mask is true in any lane.
