@@ -215,6 +215,16 @@ void grade_images_range(const case_batch& b, const conventions& conv, const batc
   for (std::size_t i = first; i < end; ++i) {
     const std::size_t r = i - first;
     if (!graded_whole.empty() && graded_whole[r]) continue;
+    // The common case, from the filter's columns alone: both classes decided and equal, and
+    // the plane value decided. The image is then misclassified neither when it equals its
+    // reference nor when it differs (rejected or not), and nothing else is read.
+    if (images.decided[r] && images.reference_decided[r] != 0 && images.plane_value_decided[r] != 0 &&
+        images.got_class(r) == images.reference_class(r)) {
+      out.got_class[i] = static_cast<std::int8_t>(images.got_class(r));
+      out.plane_value[i] = images.plane_value[r];
+      out.misclassified[i] = 0;
+      continue;
+    }
     bool all_exact = true, same = true;
     for (std::size_t j = 0; j < n; ++j) {
       got[j] = b.outputs[j * count + i];

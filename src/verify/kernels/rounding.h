@@ -150,23 +150,25 @@ inline auto round_quotient_to_double(const basic_bounded_pair<R>& num, const bas
 }
 
 /// The sum of n exact doubles t[0..n) (overwritten) correctly rounded to double, when a bound
-/// decides it. Two sweeps of TwoSum along the terms (Ogita, Rump and Oishi's VecSum) keep their
-/// sum exactly and leave in the last term the recursive sum, in the others its errors, which
-/// after the second sweep are of the order u² Σ|t|; then hi + lo = TwoSum(last, fl(Σ others)),
-/// within γ_{n−2} Σ|others| (recursive summation, Higham §4.2) of the exact sum. Sums that
-/// cancel to a few ulps of their terms, like a plane value of a point on the plane, are
-/// decided with about 2^-100 relative accuracy.
+/// decides it. A sweep of TwoSum along the terms (Ogita, Rump and Oishi's VecSum) keeps their
+/// sum exactly and leaves in the last term the recursive sum, in the others its errors; then
+/// hi + lo = TwoSum(last, fl(Σ others)), within γ_{n−2} Σ|others| (recursive summation,
+/// Higham §4.2) of the exact sum. After one sweep the others are of the order u Σ|t|, the
+/// bound of the order u² Σ|t|: enough for every sum that does not cancel to within about
+/// 2^-50 of its terms or fall near a rounding boundary. Where a lane is left undecided a second
+/// sweep brings the others to the order u² Σ|t| (plus u times the sum itself) and the bound to
+/// u³ Σ|t|: sums that cancel to a few ulps of their terms, like a plane value of a point on the
+/// plane, are then decided with about 2^-100 relative accuracy, and an exact zero sum usually
+/// leaves every term 0 (bound 0). Both bounds hold, so a lane is decided where either decides
+/// (the same lanes whether or not a vector skips the second sweep).
 template <int n, class R>
-inline auto round_sum_to_double(R* t, R& out) {
+inline auto sum_after_sweep(R* t, R& out) {
   SHADOWPROOF_UNROLL
-  for (int sweep = 0; sweep < 2; ++sweep) {
-    SHADOWPROOF_UNROLL
-    for (int i = 1; i < n; ++i) {
-      R s, e;
-      two_sum(t[i], t[i - 1], s, e);
-      t[i] = s;
-      t[i - 1] = e;
-    }
+  for (int i = 1; i < n; ++i) {
+    R s, e;
+    two_sum(t[i], t[i - 1], s, e);
+    t[i] = s;
+    t[i - 1] = e;
   }
   R rest = t[0], mass = magnitude(t[0]);
   SHADOWPROOF_UNROLL
@@ -178,6 +180,21 @@ inline auto round_sum_to_double(R* t, R& out) {
   two_sum(t[n - 1], rest, hi, lo);
   const R E = mass * R((n - 1) * unit_roundoff * inflate);  // sums are exact near underflow
   return round_pair_to_double(hi, lo, E, out);
+}
+template <int n, class R>
+inline auto round_sum_to_double(R* t, R& out) {
+  R first;
+  const auto decided = sum_after_sweep<n>(t, first);
+  if constexpr (!std::is_same_v<R, double>) {  // a vector: the second sweep only if a lane needs it
+    if (!any_lane(!decided)) {
+      out = first;
+      return decided;
+    }
+  }
+  R second;
+  const auto decided_again = sum_after_sweep<n>(t, second);
+  out = select(decided, first, second);
+  return decided | decided_again;
 }
 
 // ===========================================================================================
