@@ -149,17 +149,16 @@ inline auto round_quotient_to_double(const basic_bounded_pair<R>& num, const bas
   return den.usable() & (zero | decided);
 }
 
-/// The sum of n exact doubles t[0..n) (overwritten) correctly rounded to double, when a bound
-/// decides it. Two sweeps of TwoSum along the terms (Ogita, Rump and Oishi's VecSum) keep their
-/// sum exactly and leave in the last term the recursive sum, in the others its errors, which
-/// after the second sweep are of the order u² Σ|t|; then hi + lo = TwoSum(last, fl(Σ others)),
-/// within γ_{n−2} Σ|others| (recursive summation, Higham §4.2) of the exact sum. Sums that
-/// cancel to a few ulps of their terms, like a plane value of a point on the plane, are
-/// decided with about 2^-100 relative accuracy.
-template <int n, class R>
-inline auto round_sum_to_double(R* t, R& out) {
+/// Σ t[0..n) of n exact doubles (overwritten) as hi + lo within ± E. `sweeps` sweeps of TwoSum
+/// along the terms (Ogita, Rump and Oishi's VecSum, each an error-free transformation: the exact
+/// sum does not change) leave in the last term the recursive sum and in the others its errors,
+/// of the order u^sweeps Σ|t|; then hi + lo = TwoSum(last, fl(Σ others)), within
+/// γ_{n−2} Σ|others| (recursive summation, Higham §4.2) of the exact sum, which E bounds (sums
+/// are exact near underflow). All terms zero: an exact zero.
+template <int n, int sweeps, class R>
+inline void swept_sum(R* t, R& hi, R& lo, R& E) {
   SHADOWPROOF_UNROLL
-  for (int sweep = 0; sweep < 2; ++sweep) {
+  for (int sweep = 0; sweep < sweeps; ++sweep) {
     SHADOWPROOF_UNROLL
     for (int i = 1; i < n; ++i) {
       R s, e;
@@ -174,9 +173,18 @@ inline auto round_sum_to_double(R* t, R& out) {
     rest = rest + t[i];
     mass = mass + magnitude(t[i]);
   }
-  R hi, lo;
   two_sum(t[n - 1], rest, hi, lo);
-  const R E = mass * R((n - 1) * unit_roundoff * inflate);  // sums are exact near underflow
+  E = mass * R((n - 1) * unit_roundoff * inflate);
+}
+
+/// The sum of n exact doubles t[0..n) (overwritten) correctly rounded to double, when a bound
+/// decides it: two sweeps (swept_sum), whose errors are of the order u² Σ|t|. Sums that
+/// cancel to a few ulps of their terms, like a plane value of a point on the plane, are
+/// decided with about 2^-100 relative accuracy.
+template <int n, class R>
+inline auto round_sum_to_double(R* t, R& out) {
+  R hi, lo, E;
+  swept_sum<n, 2>(t, hi, lo, E);
   return round_pair_to_double(hi, lo, E, out);
 }
 
