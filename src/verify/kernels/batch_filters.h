@@ -64,7 +64,7 @@ template <class F, bool placement>
 struct frame_op {
   static constexpr int inputs = 9, outputs = 16;
   template <class R>
-  [[gnu::flatten]] static auto run(R* x, const conventions& conv, R* values, R&) {
+  SHADOWPROOF_FLATTEN static auto run(R* x, const conventions& conv, R* values, R&) {
     const auto decided = look_at_filter::frame_lanes<F, placement, R>(x, conv, values);
     return conv.homogeneous ? no_lanes(x[0]) : decided;
   }
@@ -83,7 +83,7 @@ struct shadow_image_op {
 /// nothing), filtered by a loop whose body has no branch on the values (the compiler
 /// vectorises it: flatten inlines the whole formula into it), copied out.
 template <class Op>
-[[gnu::flatten]] void filter_block(const double* const* in, std::size_t first, std::size_t n, const conventions& conv,
+SHADOWPROOF_FLATTEN void filter_block(const double* const* in, std::size_t first, std::size_t n, const conventions& conv,
                   const batch_filter_out& out) {
   constexpr std::size_t block = 16;
   double xs[Op::inputs][block], vs[Op::outputs][block], classes[block];
@@ -112,7 +112,7 @@ template <class Op>
 /// first: the byte stores of the masks could otherwise alias them, and every store would
 /// reload them. flatten inlines the formula into the loop (no call, no spill of its lanes).
 template <class Op, class R>
-[[gnu::flatten]] void filter_all(const double* const* in, std::size_t count, const conventions& conv,
+SHADOWPROOF_FLATTEN void filter_all(const double* const* in, std::size_t count, const conventions& conv,
                                  const batch_filter_out& out) {
   using L = lanes_of<R>;
   if constexpr (L::width == 1) {

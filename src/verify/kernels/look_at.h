@@ -205,33 +205,12 @@ auto frame_entries(const R* x, const vector3<B>& W, const vector3<B>& X, R* valu
 // ===========================================================================================
 // The lanes the first pass leaves open, where up × w cancels (up close to the view direction)
 
-/// Σ t[0..n) of n exact doubles as a pair within a bound: three sweeps of TwoSum along the
-/// terms (Ogita, Rump and Oishi's VecSum, each an error-free transformation: the exact sum
-/// does not change) leave the recursive sum in the last term and its errors, of the order
-/// u³ Σ|t|, in the others; then hi + lo = TwoSum(last, fl(Σ others)), within
-/// (n − 1) u Σ|others| (recursive summation, Higham §4.2) of the exact sum. All zero: an exact
-/// zero.
+/// Σ t[0..n) of n exact doubles as a pair within a bound: three sweeps of TwoSum
+/// (rounding.h's swept_sum), errors of the order u³ Σ|t|. All zero: an exact zero.
 template <int n, class R>
 basic_bounded_pair<R> exact_sum(R* t) {
-  SHADOWPROOF_UNROLL
-  for (int sweep = 0; sweep < 3; ++sweep) {
-    SHADOWPROOF_UNROLL
-    for (int i = 1; i < n; ++i) {
-      R s, e;
-      two_sum(t[i], t[i - 1], s, e);
-      t[i] = s;
-      t[i - 1] = e;
-    }
-  }
-  R rest = t[0], mass = magnitude(t[0]);
-  SHADOWPROOF_UNROLL
-  for (int i = 1; i < n - 1; ++i) {
-    rest = rest + t[i];
-    mass = mass + magnitude(t[i]);
-  }
   basic_bounded_pair<R> r;
-  two_sum(t[n - 1], rest, r.hi, r.lo);
-  r.e = mass * R((n - 1) * unit_roundoff * inflate);
+  swept_sum<n, 3>(t, r.hi, r.lo, r.e);
   return r;
 }
 

@@ -149,26 +149,23 @@ inline auto round_quotient_to_double(const basic_bounded_pair<R>& num, const bas
   return den.usable() & (zero | decided);
 }
 
-/// The sum of n exact doubles t[0..n) (overwritten) correctly rounded to double, when a bound
-/// decides it. A sweep of TwoSum along the terms (Ogita, Rump and Oishi's VecSum) keeps their
-/// sum exactly and leaves in the last term the recursive sum, in the others its errors; then
-/// hi + lo = TwoSum(last, fl(Σ others)), within γ_{n−2} Σ|others| (recursive summation,
-/// Higham §4.2) of the exact sum. After one sweep the others are of the order u Σ|t|, the
-/// bound of the order u² Σ|t|: enough for every sum that does not cancel to within about
-/// 2^-50 of its terms or fall near a rounding boundary. Where a lane is left undecided a second
-/// sweep brings the others to the order u² Σ|t| (plus u times the sum itself) and the bound to
-/// u³ Σ|t|: sums that cancel to a few ulps of their terms, like a plane value of a point on the
-/// plane, are then decided with about 2^-100 relative accuracy, and an exact zero sum usually
-/// leaves every term 0 (bound 0). Both bounds hold, so a lane is decided where either decides
-/// (the same lanes whether or not a vector skips the second sweep).
-template <int n, class R>
-inline auto sum_after_sweep(R* t, R& out) {
+/// Σ t[0..n) of n exact doubles (overwritten) as hi + lo within ± E. `sweeps` sweeps of TwoSum
+/// along the terms (Ogita, Rump and Oishi's VecSum, each an error-free transformation: the exact
+/// sum does not change) leave in the last term the recursive sum and in the others its errors,
+/// of the order u^sweeps Σ|t|; then hi + lo = TwoSum(last, fl(Σ others)), within
+/// γ_{n−2} Σ|others| (recursive summation, Higham §4.2) of the exact sum, which E bounds (sums
+/// are exact near underflow). All terms zero: an exact zero.
+template <int n, int sweeps, class R>
+inline void swept_sum(R* t, R& hi, R& lo, R& E) {
   SHADOWPROOF_UNROLL
-  for (int i = 1; i < n; ++i) {
-    R s, e;
-    two_sum(t[i], t[i - 1], s, e);
-    t[i] = s;
-    t[i - 1] = e;
+  for (int sweep = 0; sweep < sweeps; ++sweep) {
+    SHADOWPROOF_UNROLL
+    for (int i = 1; i < n; ++i) {
+      R s, e;
+      two_sum(t[i], t[i - 1], s, e);
+      t[i] = s;
+      t[i - 1] = e;
+    }
   }
   R rest = t[0], mass = magnitude(t[0]);
   SHADOWPROOF_UNROLL
@@ -176,15 +173,24 @@ inline auto sum_after_sweep(R* t, R& out) {
     rest = rest + t[i];
     mass = mass + magnitude(t[i]);
   }
-  R hi, lo;
   two_sum(t[n - 1], rest, hi, lo);
-  const R E = mass * R((n - 1) * unit_roundoff * inflate);  // sums are exact near underflow
-  return round_pair_to_double(hi, lo, E, out);
+  E = mass * R((n - 1) * unit_roundoff * inflate);
 }
+
+/// The sum of n exact doubles t[0..n) (overwritten) correctly rounded to double, when a bound
+/// decides it. After one sweep (swept_sum) the errors left in the terms are of the order
+/// u Σ|t| and the bound of the order u² Σ|t|: enough for every sum that does not cancel to
+/// within about 2^-50 of its terms or fall near a rounding boundary. Where a lane is left
+/// undecided a second sweep brings the errors to the order u² Σ|t| (plus u times the sum
+/// itself) and the bound to u³ Σ|t|: sums that cancel to a few ulps of their terms, like a
+/// plane value of a point on the plane, are then decided with about 2^-100 relative accuracy,
+/// and an exact zero sum usually leaves every term 0 (bound 0). Both bounds hold, so a lane is
+/// decided where either decides: the same lanes whether or not a vector skips the second sweep.
 template <int n, class R>
 inline auto round_sum_to_double(R* t, R& out) {
-  R first;
-  const auto decided = sum_after_sweep<n>(t, first);
+  R hi, lo, E, first;
+  swept_sum<n, 1>(t, hi, lo, E);
+  const auto decided = round_pair_to_double(hi, lo, E, first);
   if constexpr (!std::is_same_v<R, double>) {  // a vector: the second sweep only if a lane needs it
     if (!any_lane(!decided)) {
       out = first;
@@ -192,7 +198,8 @@ inline auto round_sum_to_double(R* t, R& out) {
     }
   }
   R second;
-  const auto decided_again = sum_after_sweep<n>(t, second);
+  swept_sum<n, 1>(t, hi, lo, E);  // the second sweep over the terms the first left
+  const auto decided_again = round_pair_to_double(hi, lo, E, second);
   out = select(decided, first, second);
   return decided | decided_again;
 }

@@ -17,22 +17,28 @@
 namespace shadowproof::detail {
 inline namespace SHADOWPROOF_KERNEL_TARGET {
 
-struct ortho_size_form {
+/// What the two forms share: four inputs, sixteen entries over three denominators, w, h and
+/// f − n (entries 0 and 5 one division in the output type, 10 and 11 over f − n, the rest exact),
+/// and a zero denominator undefining the entries over it.
+template <class Form>
+struct size_form_shape {
   static constexpr int inputs = 4, entries = 16, denominators = 3;
-  static constexpr int degree = 1;
-
   template <class R>
   static void canonical_inputs(R*, const conventions&) {}
-  template <class R>
-  static auto undefined_case(const R* x, const conventions&) { return no_lanes(x[0]); }
-  static constexpr signed char E = exact_entry;  // zeros, ±1 and small integers
+  static constexpr signed char E = exact_entry;
   static constexpr signed char denominator_of[16] = {direct_over(0), E, E, E, E, direct_over(1), E, E,
                                                      E,              E, 2, 2, E, E,              E, E};
   static fraction_layout layout(const conventions&) {
-    fraction_layout l = layout_of<ortho_size_form>();
+    fraction_layout l = layout_of<Form>();
     for (int k = 0; k < 3; ++k) l.on_zero[k] = zero_denominator::undefines_entries;
     return l;
   }
+};
+
+struct ortho_size_form : size_form_shape<ortho_size_form> {
+  static constexpr int degree = 1;
+  template <class R>
+  static auto undefined_case(const R* x, const conventions&) { return no_lanes(x[0]); }
 
   template <class N>
   static void evaluate(const N* x, const conventions& conv, N* num, N* den) {
@@ -52,23 +58,11 @@ struct ortho_size_form {
   }
 };
 
-struct perspective_size_form {
-  static constexpr int inputs = 4, entries = 16, denominators = 3;
+struct perspective_size_form : size_form_shape<perspective_size_form> {
   static constexpr int degree = 2;
-
-  template <class R>
-  static void canonical_inputs(R*, const conventions&) {}
   template <class R>
   static auto undefined_case(const R* x, const conventions&) {
     return (x[2] <= R(0.0)) | (x[3] <= R(0.0));
-  }
-  static constexpr signed char E = exact_entry;  // zeros and −1
-  static constexpr signed char denominator_of[16] = {direct_over(0), E, E, E, E, direct_over(1), E, E,
-                                                     E,              E, 2, 2, E, E,              E, E};
-  static fraction_layout layout(const conventions&) {
-    fraction_layout l = layout_of<perspective_size_form>();
-    for (int k = 0; k < 3; ++k) l.on_zero[k] = zero_denominator::undefines_entries;
-    return l;
   }
 
   template <class N>
