@@ -217,5 +217,33 @@ inline auto nonzero(const basic_bounded_pair<R>& a) {
 template <class R>
 inline R first_of(const basic_bounded_pair<R>& a) { return a.hi; }
 
+// ===========================================================================================
+// Exact zeros, for formulas whose zero entries must stay exact (a frame with an axis-aligned
+// up, sin 0 in a table)
+
+/// The value is exactly 0 (lane by lane).
+template <class R>
+inline auto exact_zero(const basic_bounded<R>& a) {
+  return (a.v == R(0.0)) & (a.e == R(0.0));
+}
+template <class R>
+inline auto exact_zero(const basic_bounded_pair<R>& a) {
+  return (a.hi == R(0.0)) & (a.e == R(0.0));  // lo = 0 when hi = 0
+}
+/// a where m is false, an exact 0 where it is true.
+template <class M, class R>
+inline basic_bounded<R> zero_where(M m, const basic_bounded<R>& a) {
+  return {select(m, R(0.0), a.v), select(m, R(0.0), a.e)};
+}
+template <class M, class R>
+inline basic_bounded_pair<R> zero_where(M m, const basic_bounded_pair<R>& a) {
+  return {select(m, R(0.0), a.hi), select(m, R(0.0), a.lo), select(m, R(0.0), a.e)};
+}
+/// a · b, an exact zero where either factor is one (the product's bound is not 0 otherwise).
+template <class B>
+[[gnu::always_inline]] inline B zero_preserving_product(const B& a, const B& b) {
+  return zero_where(exact_zero(a) | exact_zero(b), a * b);
+}
+
 }  // namespace SHADOWPROOF_KERNEL_TARGET
 }  // namespace shadowproof::detail

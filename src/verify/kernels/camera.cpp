@@ -103,19 +103,6 @@ const trig_table& cotangent_constants() {
   return k;
 }
 
-namespace {
-
-[[gnu::always_inline]] inline bool exact_zero(const bounded_pair& a) { return a.hi == 0 && a.e == 0; }
-[[gnu::always_inline]] inline bool exact_zero(const bounded& a) { return a.v == 0 && a.e == 0; }
-
-// a · b, an exact zero when either factor is one. Inlined: called some thirty times a case.
-template <class B>
-[[gnu::always_inline]] inline B product(const B& a, const B& b) {
-  return exact_zero(a) || exact_zero(b) ? B(0.0) : a * b;
-}
-
-}  // namespace
-
 bool field_of_view_inside_half_turn(double fovy, angle_unit unit) {
   if (!(fovy > 0)) return false;
   return unit == angle_unit::degrees ? fovy < 180 : fovy <= 0x1.921fb54442d18p+1;

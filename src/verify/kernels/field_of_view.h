@@ -108,18 +108,6 @@ inline basic_bounded_pair<R> widened(const basic_bounded_pair<R>& a, R e) { retu
 template <class R>
 inline basic_bounded<R> widened(const basic_bounded<R>& a, R e) { return {a.v, a.e + e}; }
 
-/// Lanes where the filter number is an exact zero.
-template <class R>
-inline auto exact_zero(const basic_bounded_pair<R>& a) { return (a.hi == R(0.0)) & (a.e == R(0.0)); }
-template <class R>
-inline auto exact_zero(const basic_bounded<R>& a) { return (a.v == R(0.0)) & (a.e == R(0.0)); }
-
-/// a · b, an exact zero in the lanes where a factor is one (sin 0 in the table).
-template <class B>
-inline B product(const B& a, const B& b) {
-  return choose(exact_zero(a) | exact_zero(b), B(decltype(first_of(a))(0.0)), a * b);
-}
-
 // ===========================================================================================
 // sin t and cos t for 0 < t ≤ 0.81, cot(fovy/2) as their ratio.
 
@@ -206,8 +194,8 @@ inline void sine_cosine(const trig_table& k, const B& t, B& sine, B& cosine) {
   B sin_a, cos_a;
   set_entry(k.sine_hi, k.sine_lo, k.sine_e, k.sine_bound, j, sin_a);
   set_entry(k.cosine_hi, k.cosine_lo, k.cosine_e, k.cosine_bound, j, cos_a);
-  sine = widened(product(sin_a, cos_r) + cos_a * sin_r, e_t);
-  cosine = widened(cos_a * cos_r - product(sin_a, sin_r), e_t);
+  sine = widened(zero_preserving_product(sin_a, cos_r) + cos_a * sin_r, e_t);
+  cosine = widened(cos_a * cos_r - zero_preserving_product(sin_a, sin_r), e_t);
 }
 
 /// cot(fovy/2) = num/den as two filter numbers, in the lanes where fovy lies in the half turn

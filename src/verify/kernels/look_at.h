@@ -45,32 +45,6 @@ auto inputs_in_range(const R* x) {
   return ok;
 }
 
-/// The value is exactly 0 (lane by lane).
-template <class R>
-auto exact_zero(const basic_bounded<R>& a) {
-  return (a.v == R(0.0)) & (a.e == R(0.0));
-}
-template <class R>
-auto exact_zero(const basic_bounded_pair<R>& a) {
-  return (a.hi == R(0.0)) & (a.e == R(0.0));  // lo = 0 when hi = 0
-}
-
-/// a where m is false, an exact 0 where it is true.
-template <class M, class R>
-basic_bounded<R> zero_where(M m, const basic_bounded<R>& a) {
-  return {select(m, R(0.0), a.v), select(m, R(0.0), a.e)};
-}
-template <class M, class R>
-basic_bounded_pair<R> zero_where(M m, const basic_bounded_pair<R>& a) {
-  return {select(m, R(0.0), a.hi), select(m, R(0.0), a.lo), select(m, R(0.0), a.e)};
-}
-
-/// a · b, an exact zero where either factor is one.
-template <class B>
-[[gnu::always_inline]] inline B product(const B& a, const B& b) {
-  return zero_where(exact_zero(a) | exact_zero(b), a * b);
-}
-
 /// a − b for two inputs: exact as a pair (TwoSum); in double within u |a − b| (0 exactly when
 /// a = b).
 template <class B, class R>
@@ -91,13 +65,15 @@ struct vector3 {
 
 template <class B>
 [[gnu::always_inline]] inline vector3<B> cross(const vector3<B>& a, const vector3<B>& b) {
-  return {{product(a.c[1], b.c[2]) - product(a.c[2], b.c[1]), product(a.c[2], b.c[0]) - product(a.c[0], b.c[2]),
-           product(a.c[0], b.c[1]) - product(a.c[1], b.c[0])}};
+  return {{zero_preserving_product(a.c[1], b.c[2]) - zero_preserving_product(a.c[2], b.c[1]),
+           zero_preserving_product(a.c[2], b.c[0]) - zero_preserving_product(a.c[0], b.c[2]),
+           zero_preserving_product(a.c[0], b.c[1]) - zero_preserving_product(a.c[1], b.c[0])}};
 }
 
 template <class B>
 [[gnu::always_inline]] inline B dot(const vector3<B>& a, const vector3<B>& b) {
-  return product(a.c[0], b.c[0]) + product(a.c[1], b.c[1]) + product(a.c[2], b.c[2]);
+  return zero_preserving_product(a.c[0], b.c[0]) + zero_preserving_product(a.c[1], b.c[1]) +
+         zero_preserving_product(a.c[2], b.c[2]);
 }
 
 /// √S for every S within s ± s.e, in the lanes where that range is positive (the mask).
@@ -176,7 +152,7 @@ auto frame_entries(const R* x, const vector3<B>& W, const vector3<B>& X, R* valu
   const vector3<B> Y = cross(W, X);
   const B ww = dot(W, W), xx = dot(X, X);
   B lengths[3];
-  auto ok = root(xx, lengths[0]) & root(product(ww, xx), lengths[1]) & root(ww, lengths[2]);
+  auto ok = root(xx, lengths[0]) & root(zero_preserving_product(ww, xx), lengths[1]) & root(ww, lengths[2]);
   const vector3<B>* axes[3] = {&X, &Y, &W};
   vector3<B> eye;
   SHADOWPROOF_UNROLL

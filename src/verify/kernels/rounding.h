@@ -144,7 +144,7 @@ inline auto round_quotient_to_double(const basic_bounded_pair<R>& num, const bas
   R q1, q2, E, rounded;
   pair_quotient(num, den, q1, q2, E);
   const auto decided = round_pair_to_double(q1, q2, E, rounded);
-  const auto zero = (num.hi == R(0.0)) & (num.e == R(0.0));  // lo = 0 when hi = 0
+  const auto zero = exact_zero(num);
   out = select(zero, R(0.0), rounded);
   return den.usable() & (zero | decided);
 }
